@@ -1,0 +1,34 @@
+// A dynamic base surface: the Coons patch of its boundary plus a cubic B-spline
+// displacement that is zero on the boundary and makes the surface interpolate the
+// interior points of a grid (DESIGN.md decision 1). It interpolates its boundary exactly.
+#pragma once
+#include "boundary.hpp"
+#include "coons_patch.hpp"
+#include "grid.hpp"
+#include "spline_displacement.hpp"
+
+namespace dbs {
+
+class BaseSurface {
+ public:
+  /// The Coons patch of `boundary` (no displacement).
+  explicit BaseSurface(Boundary boundary);
+  /// Interpolates the interior points of `grid` (nu, nv >= 2; border points are ignored:
+  /// the boundary rules there).
+  BaseSurface(Boundary boundary, const Grid& grid);
+
+  const Boundary& boundary() const { return coons_.boundary(); }
+  /// S(u,v), (u,v) clamped to [0,1]^2; exactly the boundary polylines on the sides.
+  Vec3 eval(double u, double v) const;
+  SurfacePoint eval_derivs(double u, double v) const;
+  /// Unit normal Su x Sv (falls back to a neighbouring sample where it vanishes).
+  Vec3 normal(double u, double v) const;
+  /// S sampled on a uniform nu x nv grid.
+  Grid sample(int nu, int nv) const;
+
+ private:
+  CoonsPatch coons_;
+  SplineDisplacement displacement_;
+};
+
+}  // namespace dbs

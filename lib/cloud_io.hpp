@@ -1,0 +1,21 @@
+// Reading point clouds from files (FORMATS.md). Text .xyz/.txt files are read by a fast
+// reader of our own; .ply, .obj and .drc go through Draco (draco_io).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "point_cloud.hpp"
+
+namespace dbs {
+
+/// By extension (case-insensitive): .xyz .txt .ply .obj .drc. Errors name the file, the line
+/// (or element) and the problem: Error(Io) cannot open/read, Error(Parse) malformed or
+/// truncated, Error(NonFinite), Error(Empty) no points, Error(Unsupported) unknown extension
+/// or a Draco format in a build without Draco.
+PointCloud load_cloud(const std::string& path);
+
+/// x y z per line, separated by spaces, tabs or commas; further columns ignored; '#' starts a
+/// comment; blank lines ignored.
+std::vector<Vec3> read_xyz_text(const std::string& path);
+
+}  // namespace dbs

@@ -1,0 +1,28 @@
+// Bilinearly blended Coons patch of a four-sided boundary, sides by arc length.
+#pragma once
+#include "boundary.hpp"
+
+namespace dbs {
+
+/// Value and first partial derivatives of a surface at one (u,v).
+struct SurfacePoint {
+  Vec3 p;
+  Vec3 du;
+  Vec3 dv;
+};
+
+class CoonsPatch {
+ public:
+  explicit CoonsPatch(Boundary boundary);
+  const Boundary& boundary() const { return boundary_; }
+  /// C(u,v); equals the boundary exactly on the four sides (corners coincide exactly).
+  Vec3 eval(double u, double v) const;
+  /// C and its partial derivatives (one-sided at polyline vertices).
+  SurfacePoint eval_derivs(double u, double v) const;
+
+ private:
+  Boundary boundary_;
+  Vec3 c00_, c10_, c01_, c11_;
+};
+
+}  // namespace dbs

@@ -1,0 +1,19 @@
+// The only part of libdbs that knows Draco: decoding positions from .ply/.obj/.drc and
+// encoding a point cloud with texture coordinates to .drc.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "geometry.hpp"
+
+namespace dbs {
+
+/// True when libdbs was built with Draco.
+bool draco_available();
+/// POSITION attribute of a PLY, OBJ or DRC file (faces ignored). Throws Error(Io/Parse/
+/// Unsupported) naming the file.
+std::vector<Vec3> read_positions_with_draco(const std::string& path);
+/// Writes a Draco point cloud with POSITION and TEX_COORD (u,v) attributes.
+void write_draco_point_cloud(const std::string& path, const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v);
+
+}  // namespace dbs

@@ -1,0 +1,15 @@
+// Grid projection (section 5.2): every row and every column of a grid on a base surface is
+// projected onto the cloud with the smooth curve projection (A3); each interior grid point
+// moves along its surface normal by the mean of its row and column offsets. Border points
+// stay on the boundary.
+#pragma once
+#include "base_surface.hpp"
+#include "curve_projection.hpp"
+
+namespace dbs {
+
+/// Samples `surface` on an nu x nv grid, projects it onto the cloud, returns the projected
+/// grid (border points unchanged). `gamma` as in eq. (6).
+Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProjector& projector, double gamma);
+
+}  // namespace dbs

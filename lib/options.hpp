@@ -1,0 +1,65 @@
+// Options of a parameterization run, their defaults and their documented ranges.
+#pragma once
+#include <functional>
+#include <vector>
+
+namespace dbs {
+
+struct Patch;
+
+enum class Solver { Linear = 0, Ceres = 1 };
+
+/// Progress observer: fraction in [0,1], stage name; returns true to cancel.
+using ProgressFn = std::function<bool(double fraction, const char* stage)>;
+/// Level observer: called once per finished quadtree level with that level's patches;
+/// returns true to cancel.
+using LevelFn = std::function<bool(int level, const std::vector<const Patch*>& patches)>;
+
+struct Options {
+  double accuracy = 0.0;            // absolute mean-distance target; 0 = use relative_accuracy
+  double relative_accuracy = 1e-3;  // fraction of the cloud's bounding-box diagonal
+  int max_level = 4;
+  int initial_grid = 5;
+  int max_grid = 11;
+  double smoothing = 0.5;           // gamma of eq. (6)
+  Solver solver = Solver::Linear;
+  int threads = 0;                  // 0 = hardware concurrency
+  double subcloud_near = 0.25;
+  double subcloud_own = 0.05;
+  ProgressFn progress;
+  LevelFn on_level;
+};
+
+/// Option identifiers; values equal the DBS_OPT_* numbers of the C API.
+enum class OptionId {
+  Accuracy = 0,
+  RelativeAccuracy = 1,
+  MaxLevel = 2,
+  InitialGrid = 3,
+  MaxGrid = 4,
+  Smoothing = 5,
+  Solver = 6,
+  Threads = 7,
+  SubcloudNear = 8,
+  SubcloudOwn = 9,
+};
+
+struct OptionInfo {
+  const char* name;  // e.g. "max_level"
+  bool is_integer;
+  double min;
+  double max;
+};
+
+/// Name, type and range of an option; throws Error(InvalidArgument) for an unknown id.
+OptionInfo option_info(int id);
+/// Sets an option after checking type and range (including the cross-option rules
+/// initial_grid <= max_grid and subcloud_own <= subcloud_near); throws Error(OutOfRange)
+/// naming the option, the value and the range, Error(NonFinite) for NaN/Inf,
+/// Error(InvalidArgument) for an unknown id or a real value for an integer option,
+/// Error(Unsupported) for the Ceres solver while it is not available.
+void set_option(Options& options, int id, double value);
+/// Current value of an option as a double.
+double get_option(const Options& options, int id);
+
+}  // namespace dbs

@@ -1,0 +1,34 @@
+// The outcome of a parameterization: per-point parameters in input order, the quadtree of
+// patches, and summary statistics.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "patch.hpp"
+
+namespace dbs {
+
+struct Result {
+  // per point, input order
+  std::vector<double> u, v, distance;
+  std::vector<std::int32_t> patch, level;
+  // the quadtree; patches[id].id == id; patches[0] is the root
+  std::vector<Patch> patches;
+  // summary
+  double mean_distance = 0.0, max_distance = 0.0, rms_distance = 0.0;
+  double accuracy = 0.0;      // target used, cloud units
+  bool accuracy_met = false;  // every leaf met it
+  int levels = 0;             // quadtree levels present (1 = root only)
+  int iterations = 0;         // grid evolutions over all patches
+  double length_scale = 0.0;  // h
+  double seconds = 0.0;
+
+  std::size_t leaf_count() const;
+  /// The leaf whose rectangle contains (u,v); on a seam the one with the larger u (then v)
+  /// start, so every (u,v) has exactly one leaf.
+  int leaf_at(double u, double v) const;
+  /// Surface point (and unit normal) at global (u,v) in [0,1]^2.
+  Vec3 evaluate(double u, double v, Vec3* normal = nullptr) const;
+};
+
+}  // namespace dbs

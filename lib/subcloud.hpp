@@ -1,0 +1,16 @@
+// Algorithm A4: distribute a parent's subcloud among its four children. Every parent point
+// is projected onto each child (points whose foot is outside the child or missing use the
+// nearest point of the child's boundary); a point joins a child when its distance is within
+// `near` x the child's bounding-box diagonal, and belongs only to that child when within
+// `own` x that diagonal (the first such child in child order, so the split is deterministic).
+#pragma once
+#include <array>
+#include <vector>
+
+#include "base_surface.hpp"
+
+namespace dbs {
+
+std::array<std::vector<std::size_t>, 4> split_subcloud(const std::vector<Vec3>& points, const std::vector<std::size_t>& parent_subcloud, const std::array<const BaseSurface*, 4>& children, double near, double own, int threads);
+
+}  // namespace dbs

@@ -1,0 +1,38 @@
+// Orthogonal projection of points onto a base surface: the nearest foot, not a local
+// minimum. Start from the nearest of a dense set of surface samples (k-d tree over them),
+// refine with a bounded Newton iteration in (u,v) clamped to [0,1]^2; a foot pushed
+// against the border becomes the nearest boundary point.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "base_surface.hpp"
+
+namespace dbs {
+
+struct Foot {
+  double u = 0.0;
+  double v = 0.0;
+  Vec3 point = Vec3::Zero();
+  double distance = 0.0;
+  /// True when the foot is an interior critical point (the orthogonal projection exists
+  /// inside the patch); false when it was clamped to the boundary (A4.1.2/A4.1.3).
+  bool inside = true;
+};
+
+class SurfaceProjector {
+ public:
+  /// Samples `surface` (which must outlive the projector) on a samples x samples grid.
+  explicit SurfaceProjector(const BaseSurface& surface, int samples = 64);
+  ~SurfaceProjector();
+  SurfaceProjector(const SurfaceProjector&) = delete;
+  SurfaceProjector& operator=(const SurfaceProjector&) = delete;
+
+  Foot project(const Vec3& q) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace dbs
