@@ -1,0 +1,54 @@
+#include "evolve.hpp"
+
+#include <algorithm>
+
+#include "grid_projection.hpp"
+#include "parallel.hpp"
+#include "surface_projection.hpp"
+
+namespace dbs {
+
+void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean, double& out_max) {
+  stride = std::max<std::size_t>(stride, 1);
+  const std::size_t count = (indices.size() + stride - 1) / stride;
+  out_mean = 0.0;
+  out_max = 0.0;
+  if (count == 0) return;
+  SurfaceProjector projector(surface);
+  std::vector<double> distance(count);
+  parallel_for(count, threads, [&](std::size_t k) { distance[k] = projector.project(points[indices[k * stride]]).distance; });
+  // Summed serially in index order so the result does not depend on the thread count.
+  double sum = 0.0;
+  for (double d : distance) {
+    sum += d;
+    out_max = std::max(out_max, d);
+  }
+  out_mean = sum / static_cast<double>(count);
+}
+
+void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedProjector& projector, const EvolveSettings& settings, const EvolveTick& tick) {
+  patch.point_count = patch.subcloud.size();
+  patch.iterations = 0;
+  if (patch.subcloud.empty()) {
+    patch.mean_distance = patch.max_distance = 0.0;
+    patch.accurate = true;
+    return;
+  }
+  const std::size_t stride = std::max<std::size_t>(1, patch.subcloud.size() / std::max<std::size_t>(settings.error_sample, 1));
+  double mean = 0.0, max = 0.0;
+  for (int grid = settings.initial_grid;; ++grid) {
+    Grid projected = project_grid(patch.surface, grid, grid, projector, settings.gamma);
+    patch.surface = BaseSurface(patch.surface.boundary(), projected);
+    patch.grid = std::move(projected);
+    ++patch.iterations;
+    measure_distances(patch.surface, points, patch.subcloud, stride, settings.threads, mean, max);
+    if (tick) tick(grid);
+    if (mean <= settings.accuracy || grid >= settings.max_grid) break;
+  }
+  if (stride > 1) measure_distances(patch.surface, points, patch.subcloud, 1, settings.threads, mean, max);
+  patch.mean_distance = mean;
+  patch.max_distance = max;
+  patch.accurate = mean <= settings.accuracy;
+}
+
+}  // namespace dbs

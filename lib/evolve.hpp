@@ -1,0 +1,37 @@
+// Evolution of one dynamic base surface (A1.6 for a single patch): project a grid on the
+// current surface onto the cloud, interpolate it, measure the mean distance of the patch's
+// subcloud, and grow the grid by one row and one column until the target is met or the grid
+// reaches its maximum size.
+#pragma once
+#include <functional>
+#include <vector>
+
+#include "directed_projection.hpp"
+#include "patch.hpp"
+
+namespace dbs {
+
+struct EvolveSettings {
+  double accuracy = 0.0;        // mean-distance target, cloud units
+  int initial_grid = 5;
+  int max_grid = 11;
+  double gamma = 0.5;
+  int threads = 1;              // for the distance measurement inside one patch
+  /// The mean distance that decides whether to grow the grid is measured on at most this
+  /// many evenly strided subcloud points; the final statistics use all of them.
+  std::size_t error_sample = 20000;
+};
+
+/// Called after each grid evolution with the grid size reached; may throw to cancel.
+using EvolveTick = std::function<void(int grid)>;
+
+/// Evolves `patch` (surface, subcloud set) against `projector` (which indexes the subcloud).
+/// Sets surface, grid, iterations, point_count, mean/max distance and accurate. A patch with no
+/// points keeps its surface (nothing to fit) and counts as accurate.
+void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedProjector& projector, const EvolveSettings& settings, const EvolveTick& tick = {});
+
+/// Mean and maximum distance of points[indices[k]] (k strided by `stride`) to `surface`;
+/// deterministic for any thread count.
+void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean, double& out_max);
+
+}  // namespace dbs

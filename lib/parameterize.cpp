@@ -1,0 +1,221 @@
+#include "parameterize.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numeric>
+#include <thread>
+
+#include "cloud_index.hpp"
+#include "error.hpp"
+#include "evolve.hpp"
+#include "parallel.hpp"
+#include "progress.hpp"
+#include "subcloud.hpp"
+#include "subdivide.hpp"
+#include "surface_projection.hpp"
+
+namespace dbs {
+namespace {
+
+// Share of the progress range given to each phase.
+constexpr double kIndexEnd = 0.05;
+constexpr double kLevelsEnd = 0.85;
+
+// A patch with fewer points than this is not subdivided: its children would have too few
+// points to carry a grid.
+constexpr std::size_t kMinPointsToSubdivide = 64;
+
+/// Progress fraction at the end of quadtree level `level` (levels are not known in advance,
+/// so each level gets half of what is left).
+double level_progress_end(int level) { return kIndexEnd + (kLevelsEnd - kIndexEnd) * (1.0 - std::pow(0.5, level + 1)); }
+
+class Driver {
+ public:
+  Driver(const PointCloud& cloud, const Boundary& boundary, const Options& options)
+      : points_(cloud.points()), options_(options), progress_(options.progress), threads_(resolve_threads(options.threads)), caller_(std::this_thread::get_id()) {
+    result_.accuracy = options.accuracy > 0.0 ? options.accuracy : options.relative_accuracy * cloud.bounds().diagonal();
+    Patch root{BaseSurface(boundary)};
+    root.subcloud.resize(points_.size());
+    std::iota(root.subcloud.begin(), root.subcloud.end(), std::size_t{0});
+    result_.patches.push_back(std::move(root));
+  }
+
+  Result run() {
+    const auto start = std::chrono::steady_clock::now();
+    progress_.report(0.0, "index");
+    {
+      CloudIndex index(points_);
+      result_.length_scale = cloud_spacing(index);
+    }
+    if (!(result_.length_scale > 0.0)) fail(ErrorCode::Degenerate, "the cloud's points all coincide (length scale 0)");
+    progress_.report(kIndexEnd, "index");
+
+    std::vector<int> level_ids{0};
+    for (int level = 0; !level_ids.empty(); ++level) {
+      level_ids = process_level(level, level_ids);
+      result_.levels = level + 1;
+    }
+    parameterize_points();
+    summarize();
+    result_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    progress_.finish();
+    return std::move(result_);
+  }
+
+ private:
+  /// Evolves the patches of one level, subdivides those that missed the target, reports the
+  /// level; returns the ids of the next level's patches.
+  std::vector<int> process_level(int level, const std::vector<int>& ids) {
+    const double begin = level == 0 ? kIndexEnd : level_progress_end(level - 1);
+    const double end = level_progress_end(level);
+    progress_.report(begin, "evolve");
+
+    // One index per patch over its subcloud, shared by evolution and subdivision.
+    std::vector<std::unique_ptr<CloudIndex>> indices(ids.size());
+    std::vector<std::unique_ptr<DirectedProjector>> projectors(ids.size());
+    const int outer = std::min<int>(threads_, static_cast<int>(ids.size()));
+    EvolveSettings settings;
+    settings.accuracy = result_.accuracy;
+    settings.initial_grid = options_.initial_grid;
+    settings.max_grid = options_.max_grid;
+    settings.gamma = options_.smoothing;
+    settings.threads = std::max(1, threads_ / std::max(outer, 1));
+    const int grid_steps = std::max(1, options_.max_grid - options_.initial_grid + 1);
+    parallel_for(ids.size(), outer, [&](std::size_t k) {
+      Patch& patch = result_.patches[ids[k]];
+      indices[k] = std::make_unique<CloudIndex>(points_, patch.subcloud);
+      projectors[k] = std::make_unique<DirectedProjector>(*indices[k], result_.length_scale);
+      // Progress inside a patch only when it runs on the caller's thread (a level of one patch).
+      EvolveTick tick;
+      if (std::this_thread::get_id() == caller_) {
+        tick = [&, begin, end](int grid) {
+          const double done = std::min(1.0, static_cast<double>(grid - options_.initial_grid + 1) / grid_steps);
+          progress_.report(begin + 0.8 * (end - begin) * done, "evolve");
+        };
+      }
+      evolve_patch(patch, points_, *projectors[k], settings, tick);
+    });
+    for (int id : ids) result_.iterations += result_.patches[id].iterations;
+    progress_.report(begin + 0.8 * (end - begin), "subdivide");
+
+    std::vector<int> split;
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+      const Patch& p = result_.patches[ids[k]];
+      if (!p.accurate && level < options_.max_level && p.point_count >= kMinPointsToSubdivide) split.push_back(static_cast<int>(k));
+    }
+    std::vector<std::unique_ptr<std::array<Patch, 4>>> owned(split.size());
+    parallel_for(split.size(), std::min<int>(threads_, static_cast<int>(split.size())), [&](std::size_t s) {
+      const std::size_t k = static_cast<std::size_t>(split[s]);
+      const Patch& parent = result_.patches[ids[k]];
+      owned[s] = std::make_unique<std::array<Patch, 4>>(subdivide_patch(parent, *projectors[k], options_.smoothing, options_.initial_grid));
+      std::array<Patch, 4>& quad = *owned[s];
+      const std::array<const BaseSurface*, 4> surfaces{{&quad[0].surface, &quad[1].surface, &quad[2].surface, &quad[3].surface}};
+      const int inner = std::max(1, threads_ / std::max<int>(1, static_cast<int>(split.size())));
+      std::array<std::vector<std::size_t>, 4> parts = split_subcloud(points_, parent.subcloud, surfaces, options_.subcloud_near, options_.subcloud_own, inner);
+      for (int c = 0; c < 4; ++c) quad[c].subcloud = std::move(parts[c]);
+    });
+    indices.clear();
+    projectors.clear();
+
+    std::vector<int> next;
+    for (std::size_t s = 0; s < split.size(); ++s) {
+      const int parent_id = ids[static_cast<std::size_t>(split[s])];
+      for (int c = 0; c < 4; ++c) {
+        Patch child = std::move((*owned[s])[c]);
+        child.id = static_cast<int>(result_.patches.size());
+        child.parent = parent_id;
+        child.level = level + 1;
+        result_.patches[parent_id].children[c] = child.id;
+        next.push_back(child.id);
+        result_.patches.push_back(std::move(child));
+      }
+      // An inner patch no longer needs its points: only leaves parameterize (A2).
+      std::vector<std::size_t>().swap(result_.patches[parent_id].subcloud);
+    }
+
+    if (options_.on_level) {
+      std::vector<const Patch*> view;
+      for (int id : ids) view.push_back(&result_.patches[id]);
+      if (options_.on_level(level, view)) fail(ErrorCode::Cancelled, "cancelled by the level callback after level " + std::to_string(level));
+    }
+    progress_.report(end, "subdivide");
+    return next;
+  }
+
+  /// Algorithm A2: each point is projected onto every leaf whose subcloud holds it; the least
+  /// distance wins (ties: the lower leaf id, as leaves are visited in id order).
+  void parameterize_points() {
+    const std::size_t n = points_.size();
+    result_.u.assign(n, 0.0);
+    result_.v.assign(n, 0.0);
+    result_.distance.assign(n, std::numeric_limits<double>::infinity());
+    result_.patch.assign(n, -1);
+    result_.level.assign(n, -1);
+    std::vector<int> leaves;
+    for (const Patch& p : result_.patches)
+      if (p.is_leaf()) leaves.push_back(p.id);
+    const double begin = level_progress_end(result_.levels - 1);
+    for (std::size_t l = 0; l < leaves.size(); ++l) {
+      progress_.report(begin + (1.0 - begin) * static_cast<double>(l) / leaves.size(), "parameterize");
+      const Patch& leaf = result_.patches[leaves[l]];
+      SurfaceProjector projector(leaf.surface);
+      parallel_for(leaf.subcloud.size(), threads_, [&](std::size_t k) {
+        const std::size_t i = leaf.subcloud[k];
+        const Foot foot = projector.project(points_[i]);
+        if (foot.distance < result_.distance[i]) assign(i, leaf, foot);
+      });
+    }
+    // Every point belongs to some leaf's subcloud (A4 never drops one); should one be missed,
+    // it still gets its nearest leaf rather than no parameters.
+    for (std::size_t i = 0; i < n; ++i) {
+      if (result_.patch[i] >= 0) continue;
+      for (int id : leaves) {
+        const Foot foot = SurfaceProjector(result_.patches[id].surface).project(points_[i]);
+        if (foot.distance < result_.distance[i]) assign(i, result_.patches[id], foot);
+      }
+    }
+  }
+
+  void assign(std::size_t i, const Patch& leaf, const Foot& foot) {
+    const Vec2 uv = leaf.rect.to_global(foot.u, foot.v);
+    result_.u[i] = uv.x();
+    result_.v[i] = uv.y();
+    result_.distance[i] = foot.distance;
+    result_.patch[i] = leaf.id;
+    result_.level[i] = leaf.level;
+  }
+
+  void summarize() {
+    double sum = 0.0, sum2 = 0.0, max = 0.0;
+    for (double d : result_.distance) {
+      sum += d;
+      sum2 += d * d;
+      max = std::max(max, d);
+    }
+    const double n = static_cast<double>(result_.distance.size());
+    result_.mean_distance = sum / n;
+    result_.rms_distance = std::sqrt(sum2 / n);
+    result_.max_distance = max;
+    result_.accuracy_met = true;
+    for (const Patch& p : result_.patches)
+      if (p.is_leaf() && !p.accurate) result_.accuracy_met = false;
+  }
+
+  const std::vector<Vec3>& points_;
+  const Options& options_;
+  Progress progress_;
+  int threads_;
+  std::thread::id caller_;
+  Result result_;
+};
+
+}  // namespace
+
+Result parameterize(const PointCloud& cloud, const Boundary& boundary, const Options& options) {
+  if (options.solver == Solver::Ceres) fail(ErrorCode::Unsupported, "the Ceres solver is not available in this version of libdbs");
+  return Driver(cloud, boundary, options).run();
+}
+
+}  // namespace dbs

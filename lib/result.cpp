@@ -1,0 +1,34 @@
+#include "result.hpp"
+
+#include <algorithm>
+
+#include "error.hpp"
+
+namespace dbs {
+
+std::size_t Result::leaf_count() const {
+  return static_cast<std::size_t>(std::count_if(patches.begin(), patches.end(), [](const Patch& p) { return p.is_leaf(); }));
+}
+
+int Result::leaf_at(double u, double v) const {
+  if (patches.empty()) fail(ErrorCode::Internal, "result has no patches");
+  int id = 0;
+  // Children split their parent's rectangle at its midpoint; a point on the split line goes
+  // to the upper child, so every (u,v) has exactly one leaf.
+  while (!patches[id].is_leaf()) {
+    const Patch& p = patches[id];
+    const double um = 0.5 * (p.rect.u0 + p.rect.u1), vm = 0.5 * (p.rect.v0 + p.rect.v1);
+    const int child = (u >= um ? 1 : 0) + (v >= vm ? 2 : 0);
+    id = p.children[child];
+  }
+  return id;
+}
+
+Vec3 Result::evaluate(double u, double v, Vec3* normal) const {
+  const Patch& leaf = patches[leaf_at(u, v)];
+  const Vec2 st = leaf.rect.to_local(u, v).cwiseMax(0.0).cwiseMin(1.0);
+  if (normal) *normal = leaf.surface.normal(st.x(), st.y());
+  return leaf.surface.eval(st.x(), st.y());
+}
+
+}  // namespace dbs
