@@ -23,6 +23,8 @@ class Polyline {
   Vec3 at(double s) const;
   /// Unit tangent at s (of the segment containing s).
   Vec3 tangent(double s) const;
+  /// at(s), and in d_ds its derivative length() * tangent(s), from one segment search.
+  Vec3 at(double s, Vec3& d_ds) const;
   /// The two halves at arc-length fraction s; the split point ends the first and starts
   /// the second (it is a vertex of both, exactly).
   std::pair<Polyline, Polyline> split(double s) const;
