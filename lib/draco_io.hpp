@@ -11,8 +11,12 @@ namespace dbs {
 /// True when libdbs was built with Draco.
 bool draco_available();
 /// POSITION attribute of a PLY, OBJ or DRC file (faces ignored). Throws Error(Io/Parse/
-/// Unsupported) naming the file.
+/// NonFinite/Empty/Unsupported) naming the file, and the line (ASCII PLY, OBJ) or the
+/// vertex (numbered from 0) at fault.
 std::vector<Vec3> read_positions_with_draco(const std::string& path);
+/// TEX_COORD (u,v) per point of a .drc file, in point order (what write_draco_point_cloud
+/// wrote). Errors as read_positions_with_draco; Error(Parse) when there is no TEX_COORD.
+std::vector<Vec2> read_tex_coords_with_draco(const std::string& path);
 /// Writes a Draco point cloud with POSITION and TEX_COORD (u,v) attributes.
 void write_draco_point_cloud(const std::string& path, const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v);
 

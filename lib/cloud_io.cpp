@@ -1,0 +1,37 @@
+#include "cloud_io.hpp"
+
+#include "draco_io.hpp"
+#include "error.hpp"
+#include "text_io.hpp"
+
+namespace dbs {
+
+std::vector<Vec3> read_xyz_text(const std::string& path) {
+  const std::string text = read_file_bytes(path);
+  std::vector<Vec3> points;
+  // a scanned "x y z" line holds 24 bytes or more: reserve once (trimmed below) instead of
+  // growing a large cloud step by step
+  points.reserve(text.size() / 24 + 1);
+  ContentLines lines(text);
+  std::string_view line;
+  Vec3 p;
+  while (lines.next(line)) {
+    const XyzFields fields = parse_xyz_fields(line, p);
+    if (fields.count < 3) fail(ErrorCode::Parse, file_line(path, lines.number()) + ": " + fields.problem());
+    if (!is_finite(p)) fail(ErrorCode::NonFinite, file_line(path, lines.number()) + ": non-finite coordinate in '" + excerpt(line) + "'");
+    points.push_back(p);
+  }
+  if (points.empty()) fail(ErrorCode::Empty, path + ": no points");
+  points.shrink_to_fit();
+  return points;
+}
+
+PointCloud load_cloud(const std::string& path) {
+  const std::string ext = lowercase_extension(path);
+  if (ext == ".xyz" || ext == ".txt") return PointCloud(read_xyz_text(path));
+  if (ext == ".ply" || ext == ".obj" || ext == ".drc") return PointCloud(read_positions_with_draco(path));
+  const std::string what = ext.empty() ? "no extension" : "unknown extension '" + ext + "'";
+  fail(ErrorCode::Unsupported, path + ": " + what + " for a point cloud (expected .xyz, .txt, .ply, .obj or .drc)");
+}
+
+}  // namespace dbs

@@ -1,0 +1,61 @@
+#include "obj_vertices.hpp"
+
+#include "error.hpp"
+#include "geometry.hpp"
+#include "text_io.hpp"
+
+namespace dbs {
+
+namespace {
+
+// True for a `v` line (ContentLines trimmed it); `fields` receives what follows the `v`.
+bool vertex_fields(std::string_view line, std::string_view& fields) {
+  if (line.size() < 1 || line[0] != 'v') return false;
+  if (line.size() > 1 && line[1] != ' ' && line[1] != '\t') return false;  // vn, vt, vp, ...
+  fields = line.substr(1);
+  while (!fields.empty() && (fields.front() == ' ' || fields.front() == '\t')) fields.remove_prefix(1);
+  return true;
+}
+
+// Calls fn(vertex index, line number, fields) for every `v` line until it returns false.
+template <typename Fn>
+void for_each_vertex_line(std::string_view obj, Fn fn) {
+  ContentLines lines(obj);
+  std::string_view line, fields;
+  std::size_t k = 0;
+  while (lines.next(line)) {
+    if (vertex_fields(line, fields) && !fn(k++, lines.number(), fields)) return;
+  }
+}
+
+}  // namespace
+
+std::string obj_vertex_lines(std::string_view obj, const std::string& path) {
+  std::string out;
+  out.reserve(obj.size());
+  for_each_vertex_line(obj, [&](std::size_t k, std::size_t line, std::string_view fields) {
+    Vec3 p;
+    const XyzFields parsed = parse_xyz_fields(fields, p);
+    const std::string at = file_line(path, line) + ": vertex " + std::to_string(k) + ": ";
+    if (parsed.count < 3) fail(ErrorCode::Parse, at + parsed.problem());
+    if (fields.substr(0, fields.size() - parsed.rest.size()).find(',') != std::string_view::npos)
+      fail(ErrorCode::Parse, at + "expected 3 numbers separated by blanks, found a comma");
+    out += "v ";
+    out += fields;
+    out += '\n';
+    return true;
+  });
+  if (out.empty()) fail(ErrorCode::Empty, path + ": no points (the OBJ file has no 'v' lines)");
+  return out;
+}
+
+std::size_t obj_vertex_line(std::string_view obj, std::size_t k) {
+  std::size_t found = 0;
+  for_each_vertex_line(obj, [&](std::size_t i, std::size_t line, std::string_view) {
+    if (i == k) found = line;
+    return i < k;
+  });
+  return found;
+}
+
+}  // namespace dbs

@@ -1,0 +1,97 @@
+#include "result_io.hpp"
+
+#include <charconv>
+#include <cstdint>
+#include <cstring>
+
+#include "draco_io.hpp"
+#include "error.hpp"
+#include "text_io.hpp"
+
+namespace dbs {
+
+namespace {
+
+// Shortest text that reads back to the same double (std::to_chars without a precision).
+void append_number(std::string& out, double x) {
+  char buf[32];
+  const auto end = std::to_chars(buf, buf + sizeof buf, x).ptr;
+  out.append(buf, end);
+}
+
+void append_integer(std::string& out, long long x) {
+  char buf[24];
+  const auto end = std::to_chars(buf, buf + sizeof buf, x).ptr;
+  out.append(buf, end);
+}
+
+void write_csv(const Result& result, const std::string& path) {
+  OutputFile file(path);
+  file.write("index,u,v,distance,patch,level\n");
+  std::string row;
+  for (std::size_t i = 0; i < result.u.size(); ++i) {
+    row.clear();
+    append_integer(row, static_cast<long long>(i));
+    row += ',';
+    append_number(row, result.u[i]);
+    row += ',';
+    append_number(row, result.v[i]);
+    row += ',';
+    append_number(row, result.distance[i]);
+    row += ',';
+    append_integer(row, result.patch[i]);
+    row += ',';
+    append_integer(row, result.level[i]);
+    row += '\n';
+    file.write(row);
+  }
+  file.close();
+}
+
+// Little-endian whatever the host's byte order.
+void append_le32(std::string& out, std::uint32_t bits) {
+  const char bytes[4] = {static_cast<char>(bits & 0xff), static_cast<char>((bits >> 8) & 0xff), static_cast<char>((bits >> 16) & 0xff),
+                         static_cast<char>((bits >> 24) & 0xff)};
+  out.append(bytes, 4);
+}
+
+void append_float(std::string& out, double x) {
+  const float f = static_cast<float>(x);
+  std::uint32_t bits;
+  std::memcpy(&bits, &f, 4);
+  append_le32(out, bits);
+}
+
+// Written by hand: Draco's PLY encoder writes only the attributes it knows (positions,
+// normals, colors, texture coordinates), not custom properties such as distance and patch.
+void write_ply(const Result& result, const PointCloud& cloud, const std::string& path) {
+  OutputFile file(path);
+  file.write("ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(cloud.size()) +
+             "\nproperty float x\nproperty float y\nproperty float z\nproperty float u\nproperty float v\n"
+             "property float distance\nproperty int patch\nend_header\n");
+  std::string row;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    row.clear();
+    const Vec3& p = cloud.points()[i];
+    for (const double x : {p.x(), p.y(), p.z(), result.u[i], result.v[i], result.distance[i]}) append_float(row, x);
+    append_le32(row, static_cast<std::uint32_t>(result.patch[i]));
+    file.write(row);
+  }
+  file.close();
+}
+
+}  // namespace
+
+void save_result(const Result& result, const PointCloud& cloud, const std::string& path) {
+  const std::size_t n = cloud.size();
+  if (result.u.size() != n || result.v.size() != n || result.distance.size() != n || result.patch.size() != n || result.level.size() != n)
+    fail(ErrorCode::InvalidArgument, "cannot write '" + path + "': the result holds " + std::to_string(result.u.size()) + " points, the cloud " + std::to_string(n));
+  const std::string ext = lowercase_extension(path);
+  if (ext == ".csv") return write_csv(result, path);
+  if (ext == ".ply") return write_ply(result, cloud, path);
+  if (ext == ".drc") return write_draco_point_cloud(path, cloud.points(), result.u, result.v);
+  const std::string what = ext.empty() ? "no extension" : "unknown extension '" + ext + "'";
+  fail(ErrorCode::Unsupported, path + ": " + what + " for a result (expected .csv, .ply or .drc)");
+}
+
+}  // namespace dbs
