@@ -2,7 +2,10 @@
 // is projected onto each child (points whose foot is outside the child or missing use the
 // nearest point of the child's boundary); a point joins a child when its distance is within
 // `near` x the child's bounding-box diagonal, and belongs only to that child when within
-// `own` x that diagonal (the first such child in child order, so the split is deterministic).
+// `own` x that diagonal (when several children qualify, the nearest; ties go to the first in
+// child order, so the split is deterministic). A point near no child joins the nearest one,
+// so the parent's subcloud is the union of the children's. Each list keeps the order of
+// `parent_subcloud`; the result does not depend on `threads`.
 #pragma once
 #include <array>
 #include <vector>

@@ -1,0 +1,124 @@
+#include "subcloud.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include "error.hpp"
+#include "parallel.hpp"
+#include "surface_projection.hpp"
+
+namespace dbs {
+
+namespace {
+
+/// Samples per side used to bound a child surface (its bounding box is that of the surface,
+/// which may bulge beyond the box of its boundary).
+constexpr int kBoundsSamples = 33;
+/// The sampled box is grown by this fraction of its diagonal so that it holds the surface
+/// between the samples too; the distance to it is then a lower bound of the distance to the
+/// surface (the chord error of 32 intervals is far below this even on a half cylinder).
+constexpr double kBoxPadding = 0.02;
+
+/// One child as A4 sees it: its projector, its limits and a box around its surface.
+struct ChildTest {
+  std::unique_ptr<SurfaceProjector> projector;
+  Box3 box;           // padded
+  double near_limit;  // near x bounding-box diagonal
+  double own_limit;   // own x bounding-box diagonal
+
+  ChildTest(const BaseSurface& surface, double near, double own) : projector(std::make_unique<SurfaceProjector>(surface)) {
+    box = surface.boundary().bounds();
+    for (const Vec3& p : surface.sample(kBoundsSamples, kBoundsSamples).points) box.extend(p);
+    const double diagonal = box.diagonal();
+    near_limit = near * diagonal;
+    own_limit = own * diagonal;
+    box.min.array() -= kBoxPadding * diagonal;
+    box.max.array() += kBoxPadding * diagonal;
+  }
+
+  /// A lower bound of the distance of p to the surface: its distance to the box.
+  double lower_bound(const Vec3& p) const {
+    const Vec3 outside = (box.min - p).cwiseMax(p - box.max).cwiseMax(0.0);
+    return outside.norm();
+  }
+};
+
+/// Which children (bit i = child i) point p joins: A4.3 and A4.4 with the rules of the
+/// header. The distance to a child is projected only when its lower bound says it can
+/// matter, so a point close to one child is usually projected once instead of four times;
+/// the outcome is that of projecting on all four.
+std::uint8_t membership(const Vec3& p, const std::array<ChildTest, 4>& children) {
+  std::array<double, 4> lower, d;
+  d.fill(std::numeric_limits<double>::infinity());
+  std::array<bool, 4> known{};
+  std::array<int, 4> order{{0, 1, 2, 3}};
+  for (int i = 0; i < 4; ++i) lower[i] = children[i].lower_bound(p);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return lower[a] < lower[b] || (lower[a] == lower[b] && a < b); });
+  auto distance = [&](int i) {
+    if (!known[i]) {
+      d[i] = children[i].projector->project(p).distance;
+      known[i] = true;
+    }
+    return d[i];
+  };
+  // Nearer of two children; ties go to the first in child order.
+  auto nearer = [&](int i, int j) { return j < 0 || d[i] < d[j] || (d[i] == d[j] && i < j); };
+
+  // A4.4: within the "own" limit of some child the point belongs to that child alone. When
+  // several children qualify (near a seam) the nearest one owns it, so a point is never
+  // given only to a child it lies outside of.
+  int owner = -1;
+  for (int i : order) {
+    if (lower[i] > children[i].own_limit || (owner >= 0 && lower[i] > d[owner])) continue;
+    if (distance(i) <= children[i].own_limit && nearer(i, owner)) owner = i;
+  }
+  if (owner >= 0) return static_cast<std::uint8_t>(1u << owner);
+
+  // A4.3: every child within the "near" limit.
+  unsigned mask = 0;
+  for (int i = 0; i < 4; ++i) {
+    if (lower[i] <= children[i].near_limit && distance(i) <= children[i].near_limit) mask |= 1u << i;
+  }
+  // C(k) must be the union of the subclouds: a point near no child goes to the nearest.
+  if (mask == 0) {
+    int nearest = -1;
+    for (int i = 0; i < 4; ++i) {
+      distance(i);
+      if (nearer(i, nearest)) nearest = i;
+    }
+    mask = 1u << nearest;
+  }
+  return static_cast<std::uint8_t>(mask);
+}
+
+}  // namespace
+
+std::array<std::vector<std::size_t>, 4> split_subcloud(const std::vector<Vec3>& points, const std::vector<std::size_t>& parent_subcloud, const std::array<const BaseSurface*, 4>& children, double near, double own, int threads) {
+  if (!(own >= 0.0 && near >= own)) fail(ErrorCode::InvalidArgument, "split_subcloud: need 0 <= own <= near, got own = " + std::to_string(own) + ", near = " + std::to_string(near));
+  for (std::size_t k = 0; k < parent_subcloud.size(); ++k) {
+    if (parent_subcloud[k] >= points.size()) fail(ErrorCode::OutOfRange, "split_subcloud: parent_subcloud[" + std::to_string(k) + "] = " + std::to_string(parent_subcloud[k]) + " is not below the point count " + std::to_string(points.size()));
+  }
+  for (int i = 0; i < 4; ++i) {
+    if (children[i] == nullptr) fail(ErrorCode::InvalidArgument, "split_subcloud: child " + std::to_string(i) + " is null");
+  }
+  const std::array<ChildTest, 4> tests{{ChildTest(*children[0], near, own), ChildTest(*children[1], near, own), ChildTest(*children[2], near, own), ChildTest(*children[3], near, own)}};
+
+  // A4.1-A4.2: the projector's foot is the orthogonal one when it exists inside the child,
+  // otherwise the nearest boundary point, so its distance is the one A4.3 measures. Each
+  // point writes only its own mask.
+  std::vector<std::uint8_t> masks(parent_subcloud.size());
+  parallel_for(parent_subcloud.size(), threads, [&](std::size_t k) { masks[k] = membership(points[parent_subcloud[k]], tests); });
+
+  std::array<std::vector<std::size_t>, 4> subclouds;
+  for (std::size_t k = 0; k < masks.size(); ++k) {
+    for (int i = 0; i < 4; ++i) {
+      if (masks[k] & (1u << i)) subclouds[i].push_back(parent_subcloud[k]);
+    }
+  }
+  return subclouds;
+}
+
+}  // namespace dbs
