@@ -1,0 +1,53 @@
+// dbs_boundary_*: four-sided boundaries from arrays and files.
+#include "arrays.hpp"
+#include "boundary_io.hpp"
+#include "firewall.hpp"
+
+using namespace dbs::capi;
+
+namespace {
+
+const dbs::Polyline& side_of(const dbs::Boundary& boundary, int32_t side) {
+  require_index("side", side, 4);
+  return boundary.side(static_cast<dbs::Side>(side));
+}
+
+}  // namespace
+
+int dbs_boundary_create(const double* bottom, size_t n_bottom, const double* right, size_t n_right, const double* top, size_t n_top, const double* left, size_t n_left, dbs_boundary** out) {
+  return guarded(__func__, [&] {
+    require_non_null(bottom, "bottom");
+    require_non_null(right, "right");
+    require_non_null(top, "top");
+    require_non_null(left, "left");
+    require_non_null(out, "out");
+    dbs::Boundary boundary(points_from(bottom, n_bottom), points_from(right, n_right), points_from(top, n_top), points_from(left, n_left));
+    *out = new dbs_boundary{std::move(boundary)};
+  });
+}
+
+int dbs_boundary_load(const char* path, dbs_boundary** out) {
+  return guarded(__func__, [&] {
+    require_non_null(path, "path");
+    require_non_null(out, "out");
+    *out = new dbs_boundary{dbs::load_boundary(path)};
+  });
+}
+
+void dbs_boundary_destroy(dbs_boundary* boundary) { delete boundary; }
+
+int dbs_boundary_side_count(const dbs_boundary* boundary, int32_t side, size_t* out) {
+  return guarded(__func__, [&] {
+    require_non_null(boundary, "boundary");
+    require_non_null(out, "out");
+    *out = side_of(boundary->boundary, side).size();
+  });
+}
+
+int dbs_boundary_side_points(const dbs_boundary* boundary, int32_t side, double* out_xyz, size_t capacity) {
+  return guarded(__func__, [&] {
+    require_non_null(boundary, "boundary");
+    require_non_null(out_xyz, "out_xyz");
+    copy_points(side_of(boundary->boundary, side).points(), out_xyz, capacity, "out_xyz");
+  });
+}

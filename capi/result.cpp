@@ -1,0 +1,128 @@
+// dbs_result_*: per-point outputs, statistics, surface evaluation and saving.
+#include <algorithm>
+#include <cmath>
+
+#include "firewall.hpp"
+#include "result_io.hpp"
+
+using namespace dbs::capi;
+
+namespace {
+
+/// Copies a per-point array into a caller buffer of `capacity` values.
+template <class From, class To>
+void copy_values(const std::vector<From>& values, To* out, size_t capacity, const char* name) {
+  require_capacity(name, capacity, values.size(), "values");
+  std::transform(values.begin(), values.end(), out, [](From x) { return static_cast<To>(x); });
+}
+
+/// A parameter of dbs_result_evaluate: finite and inside [0,1].
+void require_unit(const char* name, double value) {
+  if (!std::isfinite(value)) fail_status(DBS_ERR_NON_FINITE, std::string("parameter ") + name + " is not finite (" + std::to_string(value) + ")");
+  if (value < 0.0 || value > 1.0) fail_status(DBS_ERR_OUT_OF_RANGE, std::string("parameter ") + name + " = " + std::to_string(value) + " is outside [0, 1]");
+}
+
+double stat_value(const dbs::Result& r, int32_t stat) {
+  switch (stat) {
+    case DBS_STAT_MEAN_DISTANCE: return r.mean_distance;
+    case DBS_STAT_MAX_DISTANCE: return r.max_distance;
+    case DBS_STAT_RMS_DISTANCE: return r.rms_distance;
+    case DBS_STAT_ACCURACY: return r.accuracy;
+    case DBS_STAT_ACCURACY_MET: return r.accuracy_met ? 1.0 : 0.0;
+    case DBS_STAT_LEVELS: return r.levels;
+    case DBS_STAT_PATCHES: return static_cast<double>(r.patches.size());
+    case DBS_STAT_LEAVES: return static_cast<double>(r.leaf_count());
+    case DBS_STAT_ITERATIONS: return r.iterations;
+    case DBS_STAT_SECONDS: return r.seconds;
+    case DBS_STAT_LENGTH_SCALE: return r.length_scale;
+    default: break;
+  }
+  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_LENGTH_SCALE + 1) + ")");
+}
+
+}  // namespace
+
+void dbs_result_destroy(dbs_result* result) { delete result; }
+
+int dbs_result_point_count(const dbs_result* result, size_t* out) {
+  return guarded(__func__, [&] {
+    require_non_null(result, "result");
+    require_non_null(out, "out");
+    *out = result->result.u.size();
+  });
+}
+
+int dbs_result_uv(const dbs_result* result, double* out_uv, size_t capacity) {
+  return guarded(__func__, [&] {
+    require_non_null(result, "result");
+    require_non_null(out_uv, "out_uv");
+    const dbs::Result& r = result->result;
+    require_capacity("out_uv", capacity, r.u.size(), "pairs");
+    for (size_t i = 0; i < r.u.size(); ++i) {
+      out_uv[2 * i] = r.u[i];
+      out_uv[2 * i + 1] = r.v[i];
+    }
+  });
+}
+
+int dbs_result_distances(const dbs_result* result, double* out, size_t capacity) {
+  return guarded(__func__, [&] {
+    require_non_null(result, "result");
+    require_non_null(out, "out");
+    copy_values(result->result.distance, out, capacity, "out");
+  });
+}
+
+int dbs_result_point_patches(const dbs_result* result, int32_t* out, size_t capacity) {
+  return guarded(__func__, [&] {
+    require_non_null(result, "result");
+    require_non_null(out, "out");
+    copy_values(result->result.patch, out, capacity, "out");
+  });
+}
+
+int dbs_result_point_levels(const dbs_result* result, int32_t* out, size_t capacity) {
+  return guarded(__func__, [&] {
+    require_non_null(result, "result");
+    require_non_null(out, "out");
+    copy_values(result->result.level, out, capacity, "out");
+  });
+}
+
+int dbs_result_evaluate(const dbs_result* result, double u, double v, double* out_xyz, double* out_normal) {
+  return guarded(__func__, [&] {
+    require_non_null(result, "result");
+    require_non_null(out_xyz, "out_xyz");
+    require_unit("u", u);
+    require_unit("v", v);
+    dbs::Vec3 normal;
+    dbs::Vec3 point = result->result.evaluate(u, v, out_normal ? &normal : nullptr);
+    std::copy(point.data(), point.data() + 3, out_xyz);
+    if (out_normal) std::copy(normal.data(), normal.data() + 3, out_normal);
+  });
+}
+
+int dbs_result_stat(const dbs_result* result, int32_t stat, double* out) {
+  return guarded(__func__, [&] {
+    require_non_null(result, "result");
+    require_non_null(out, "out");
+    *out = stat_value(result->result, stat);
+  });
+}
+
+int dbs_result_patches(const dbs_result* result, const dbs_patches** out) {
+  return guarded(__func__, [&] {
+    require_non_null(result, "result");
+    require_non_null(out, "out");
+    *out = &result->all;
+  });
+}
+
+int dbs_result_save(const dbs_result* result, const dbs_cloud* cloud, const char* path) {
+  return guarded(__func__, [&] {
+    require_non_null(result, "result");
+    require_non_null(cloud, "cloud");
+    require_non_null(path, "path");
+    dbs::save_result(result->result, cloud->cloud, path);
+  });
+}

@@ -1,0 +1,177 @@
+/* dbs_boundary_*: creation from four polylines, validation, loading, read-back. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "capi_support.h"
+
+#define UNTOUCHED ((dbs_boundary *)0x1)
+
+/* The 100 x 50 panel of FORMATS.md, the bottom with a middle vertex. */
+static const double kBottom[] = {0, 0, 0, 40, 0, 0, 100, 0, 0};
+static const double kRight[] = {100, 0, 0, 100, 50, 0};
+static const double kTop[] = {0, 50, 0, 100, 50, 0};
+static const double kLeft[] = {0, 0, 0, 0, 50, 0};
+
+static void assert_side(const dbs_boundary *boundary, int32_t side, const double *expected, size_t n) {
+  size_t count = 0;
+  assert_ok(dbs_boundary_side_count(boundary, side, &count));
+  assert_int_equal(count, n);
+  double xyz[3 * 8];
+  assert_true(n <= 8);
+  assert_ok(dbs_boundary_side_points(boundary, side, xyz, n));
+  for (size_t i = 0; i < 3 * n; ++i) assert_true(xyz[i] == expected[i]);
+}
+
+static void create_keeps_the_sides(void **state) {
+  (void)state;
+  dbs_boundary *boundary = NULL;
+  assert_ok(dbs_boundary_create(kBottom, 3, kRight, 2, kTop, 2, kLeft, 2, &boundary));
+  assert_side(boundary, DBS_SIDE_BOTTOM, kBottom, 3);
+  assert_side(boundary, DBS_SIDE_RIGHT, kRight, 2);
+  assert_side(boundary, DBS_SIDE_TOP, kTop, 2);
+  assert_side(boundary, DBS_SIDE_LEFT, kLeft, 2);
+  dbs_boundary_destroy(boundary);
+}
+
+static void near_corners_are_made_to_coincide(void **state) {
+  (void)state;
+  /* the right side starts 1e-5 away from the bottom's end: 1e-7 of the diagonal (~112) */
+  const double right[] = {100, 1e-5, 0, 100, 50, 0};
+  dbs_boundary *boundary = NULL;
+  assert_ok(dbs_boundary_create(kBottom, 3, right, 2, kTop, 2, kLeft, 2, &boundary));
+  double bottom[9], right_back[6];
+  assert_ok(dbs_boundary_side_points(boundary, DBS_SIDE_BOTTOM, bottom, 3));
+  assert_ok(dbs_boundary_side_points(boundary, DBS_SIDE_RIGHT, right_back, 2));
+  for (int c = 0; c < 3; ++c) assert_true(bottom[6 + c] == right_back[c]);
+  assert_true(fabs(bottom[7] - 0.5e-5) < 1e-12); /* the mean of the two */
+  dbs_boundary_destroy(boundary);
+}
+
+static void invalid_boundaries_are_rejected(void **state) {
+  (void)state;
+  dbs_boundary *boundary = UNTOUCHED;
+  /* a side with a single point names the side */
+  assert_failure(dbs_boundary_create(kBottom, 3, kRight, 1, kTop, 2, kLeft, 2, &boundary), DBS_ERR_INVALID_ARGUMENT, "dbs_boundary_create", "right");
+  /* a non-finite coordinate names the side */
+  const double top_nan[] = {0, 50, 0, 100, NAN, 0};
+  assert_failure(dbs_boundary_create(kBottom, 3, kRight, 2, top_nan, 2, kLeft, 2, &boundary), DBS_ERR_NON_FINITE, "dbs_boundary_create", "top");
+  /* corners apart by 1e-2 of the diagonal */
+  const double left_apart[] = {0, 1, 0, 0, 50, 0};
+  assert_failure(dbs_boundary_create(kBottom, 3, kRight, 2, kTop, 2, left_apart, 2, &boundary), DBS_ERR_DEGENERATE, "dbs_boundary_create", NULL);
+  /* sides joined in the wrong direction (top running in decreasing u) */
+  const double top_reversed[] = {100, 50, 0, 0, 50, 0};
+  assert_failure(dbs_boundary_create(kBottom, 3, kRight, 2, top_reversed, 2, kLeft, 2, &boundary), DBS_ERR_DEGENERATE, "dbs_boundary_create", NULL);
+  /* a side whose points coincide names the side */
+  const double slanted_right[] = {1, 0, 0, 0.5, 1, 0};
+  const double point_top[] = {0.5, 1, 0, 0.5, 1, 0};
+  const double slanted_left[] = {0, 0, 0, 0.5, 1, 0};
+  const double unit_bottom[] = {0, 0, 0, 1, 0, 0};
+  assert_failure(dbs_boundary_create(unit_bottom, 2, slanted_right, 2, point_top, 2, slanted_left, 2, &boundary), DBS_ERR_DEGENERATE, "dbs_boundary_create", "top");
+  assert_ptr_equal(boundary, UNTOUCHED);
+}
+
+static void zero_area_boundary_is_degenerate(void **state) {
+  (void)state;
+  /* a "square" folded onto the segment [0,1] of the x axis, every side of length > 0 */
+  const double bottom[] = {0, 0, 0, 1, 0, 0};
+  const double right[] = {1, 0, 0, 0.5, 0, 0, 1, 0, 0};
+  const double top[] = {0, 0, 0, 0.5, 0, 0, 1, 0, 0};
+  const double left[] = {0, 0, 0, 0.5, 0, 0, 0, 0, 0};
+  dbs_boundary *boundary = UNTOUCHED;
+  assert_failure(dbs_boundary_create(bottom, 2, right, 3, top, 3, left, 3, &boundary), DBS_ERR_DEGENERATE, "dbs_boundary_create", NULL);
+  assert_ptr_equal(boundary, UNTOUCHED);
+}
+
+static void side_ids_and_buffers_are_checked(void **state) {
+  (void)state;
+  dbs_boundary *boundary = NULL;
+  assert_ok(dbs_boundary_create(kBottom, 3, kRight, 2, kTop, 2, kLeft, 2, &boundary));
+  size_t count = 77;
+  assert_failure(dbs_boundary_side_count(boundary, 4, &count), DBS_ERR_OUT_OF_RANGE, "dbs_boundary_side_count", "side 4 is outside its range [0, 4)");
+  assert_failure(dbs_boundary_side_count(boundary, -1, &count), DBS_ERR_OUT_OF_RANGE, "dbs_boundary_side_count", "side -1 ");
+  assert_int_equal(count, 77);
+  double xyz[9] = {-7, -7, -7, -7, -7, -7, -7, -7, -7};
+  assert_failure(dbs_boundary_side_points(boundary, 4, xyz, 3), DBS_ERR_OUT_OF_RANGE, "dbs_boundary_side_points", "side 4");
+  assert_failure(dbs_boundary_side_points(boundary, DBS_SIDE_BOTTOM, xyz, 2), DBS_ERR_BUFFER_TOO_SMALL, "dbs_boundary_side_points", "holds 2 points but 3 are needed");
+  for (int i = 0; i < 9; ++i) assert_true(xyz[i] == -7);
+  dbs_boundary_destroy(boundary);
+}
+
+static void load_reads_sections_in_any_order(void **state) {
+  (void)state;
+  char path[512];
+  temp_path(path, sizeof path, "boundary.txt");
+  write_text(path,
+             "# boundary of a 100 x 50 mm panel\n"
+             "top\n"
+             "0 50 0\n"
+             "100 50 0\n"
+             "\n"
+             "bottom\n"
+             "0 0 0\n"
+             "40 0 0 # a middle vertex\n"
+             "100 0 0\n"
+             "left\n"
+             "0 0 0\n"
+             "0 50 0\n"
+             "right\n"
+             "100 0 0\n"
+             "100 50 0\n");
+  dbs_boundary *boundary = NULL;
+  assert_ok(dbs_boundary_load(path, &boundary));
+  assert_side(boundary, DBS_SIDE_BOTTOM, kBottom, 3);
+  assert_side(boundary, DBS_SIDE_RIGHT, kRight, 2);
+  assert_side(boundary, DBS_SIDE_TOP, kTop, 2);
+  assert_side(boundary, DBS_SIDE_LEFT, kLeft, 2);
+  dbs_boundary_destroy(boundary);
+}
+
+static void load_errors_name_file_and_line(void **state) {
+  (void)state;
+  char path[512], where[600];
+  dbs_boundary *boundary = UNTOUCHED;
+
+  temp_path(path, sizeof path, "unknown_section.txt");
+  write_text(path, "bottom\n0 0 0\n1 0 0\nmiddle\n0 0 0\n");
+  snprintf(where, sizeof where, "%s:4", path);
+  assert_failure(dbs_boundary_load(path, &boundary), DBS_ERR_PARSE, "dbs_boundary_load", where);
+
+  temp_path(path, sizeof path, "point_first.txt");
+  write_text(path, "# header\n0 0 0\nbottom\n");
+  snprintf(where, sizeof where, "%s:2", path);
+  assert_failure(dbs_boundary_load(path, &boundary), DBS_ERR_PARSE, "dbs_boundary_load", where);
+
+  temp_path(path, sizeof path, "missing_left.txt");
+  write_text(path, "bottom\n0 0 0\n1 0 0\nright\n1 0 0\n1 1 0\ntop\n0 1 0\n1 1 0\n");
+  assert_failure(dbs_boundary_load(path, &boundary), DBS_ERR_PARSE, "dbs_boundary_load", "left");
+
+  temp_path(path, sizeof path, "malformed.txt");
+  write_text(path, "bottom\n0 0 0\n1 zero 0\n");
+  snprintf(where, sizeof where, "%s:3", path);
+  assert_failure(dbs_boundary_load(path, &boundary), DBS_ERR_PARSE, "dbs_boundary_load", where);
+
+  temp_path(path, sizeof path, "no_such_boundary.txt");
+  remove(path);
+  assert_failure(dbs_boundary_load(path, &boundary), DBS_ERR_IO, "dbs_boundary_load", path);
+  assert_ptr_equal(boundary, UNTOUCHED);
+}
+
+static void destroy_accepts_null(void **state) {
+  (void)state;
+  dbs_boundary_destroy(NULL);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(create_keeps_the_sides),
+      cmocka_unit_test(near_corners_are_made_to_coincide),
+      cmocka_unit_test(invalid_boundaries_are_rejected),
+      cmocka_unit_test(zero_area_boundary_is_degenerate),
+      cmocka_unit_test(side_ids_and_buffers_are_checked),
+      cmocka_unit_test(load_reads_sections_in_any_order),
+      cmocka_unit_test(load_errors_name_file_and_line),
+      cmocka_unit_test(destroy_accepts_null),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}

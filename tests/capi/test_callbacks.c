@@ -1,0 +1,267 @@
+/* Progress and level callbacks: what they receive, on which thread, and cancellation. */
+#define _POSIX_C_SOURCE 200809L /* pthread_self */
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "capi_support.h"
+
+#define MAX_CALLS 100000
+#define STAGE_SIZE 16
+
+struct progress_log {
+  double fractions[MAX_CALLS];
+  char stages[MAX_CALLS][STAGE_SIZE]; /* copies: `stage` is only valid during the call */
+  size_t calls;
+  size_t cancel_at; /* 1-based call that returns non-zero; 0 = never */
+  int wrong_thread;
+  pthread_t caller;
+};
+
+static int record_progress(double fraction, const char *stage, void *payload) {
+  struct progress_log *log = payload;
+  if (!pthread_equal(pthread_self(), log->caller)) log->wrong_thread = 1;
+  if (log->calls < MAX_CALLS) {
+    log->fractions[log->calls] = fraction;
+    snprintf(log->stages[log->calls], STAGE_SIZE, "%s", stage);
+  }
+  ++log->calls;
+  return log->calls == log->cancel_at;
+}
+
+static struct progress_log *new_progress_log(void) {
+  struct progress_log *log = calloc(1, sizeof *log);
+  assert_non_null(log);
+  log->caller = pthread_self();
+  return log;
+}
+
+/* The subdividing case: a bump one patch cannot fit to 1e-6, at most two levels below the root. */
+static dbs_options *subdividing_options(void) {
+  dbs_options *options = NULL;
+  assert_ok(dbs_options_create(&options));
+  assert_ok(dbs_options_set_double(options, DBS_OPT_ACCURACY, 1e-6));
+  assert_ok(dbs_options_set_int(options, DBS_OPT_MAX_LEVEL, 2));
+  assert_ok(dbs_options_set_int(options, DBS_OPT_MAX_GRID, 6));
+  assert_ok(dbs_options_set_int(options, DBS_OPT_THREADS, 2));
+  return options;
+}
+
+static void progress_rises_to_exactly_one(void **state) {
+  (void)state;
+  dbs_cloud *cloud = bump_cloud(40, 0.2);
+  dbs_boundary *boundary = square_boundary(3);
+  dbs_options *options = subdividing_options();
+  struct progress_log *log = new_progress_log();
+  assert_ok(dbs_options_set_progress(options, record_progress, log));
+  dbs_result *result = parameterize_or_fail(cloud, boundary, options);
+
+  assert_true(log->calls >= 3 && log->calls <= MAX_CALLS);
+  assert_false(log->wrong_thread);
+  static const char *known[] = {"index", "evolve", "subdivide", "parameterize", "done"};
+  for (size_t i = 0; i < log->calls; ++i) {
+    assert_true(log->fractions[i] >= 0.0 && log->fractions[i] <= 1.0);
+    if (i > 0) assert_true(log->fractions[i] >= log->fractions[i - 1]);
+    int stage_known = 0;
+    for (int k = 0; k < 5; ++k) stage_known |= strcmp(log->stages[i], known[k]) == 0;
+    assert_true(stage_known);
+  }
+  assert_true(log->fractions[log->calls - 1] == 1.0);
+  assert_string_equal(log->stages[log->calls - 1], "done");
+  assert_string_equal(log->stages[0], "index");
+  /* 1.0 only at the end: the earlier stages leave room for the later ones */
+  assert_true(log->fractions[log->calls - 2] < 1.0);
+
+  dbs_result_destroy(result);
+  free(log);
+  dbs_options_destroy(options);
+  dbs_boundary_destroy(boundary);
+  dbs_cloud_destroy(cloud);
+}
+
+static void progress_can_cancel_at_any_call(void **state) {
+  (void)state;
+  dbs_cloud *cloud = bump_cloud(40, 0.2);
+  dbs_boundary *boundary = square_boundary(3);
+  dbs_options *options = subdividing_options();
+  struct progress_log *log = new_progress_log();
+  assert_ok(dbs_options_set_progress(options, record_progress, log));
+  dbs_result *result = parameterize_or_fail(cloud, boundary, options);
+  dbs_result_destroy(result);
+  const size_t total = log->calls;
+
+  const size_t cancel_at[] = {1, total / 2, total};
+  for (int k = 0; k < 3; ++k) {
+    log->calls = 0;
+    log->cancel_at = cancel_at[k];
+    result = NULL;
+    assert_failure(dbs_parameterize(cloud, boundary, options, &result), DBS_ERR_CANCELLED, "dbs_parameterize", "cancelled");
+    assert_null(result);
+    /* no call after the one that cancelled */
+    assert_int_equal(log->calls, cancel_at[k]);
+  }
+  free(log);
+  dbs_options_destroy(options);
+  dbs_boundary_destroy(boundary);
+  dbs_cloud_destroy(cloud);
+}
+
+static void cleared_progress_is_not_called(void **state) {
+  (void)state;
+  dbs_cloud *cloud = plane_cloud(11, 6);
+  dbs_boundary *boundary = plane_boundary(2);
+  dbs_options *options = NULL;
+  assert_ok(dbs_options_create(&options));
+  struct progress_log *log = new_progress_log();
+  log->cancel_at = 1; /* would cancel if it were called */
+  assert_ok(dbs_options_set_progress(options, record_progress, log));
+  assert_ok(dbs_options_set_progress(options, NULL, log));
+  dbs_result *result = parameterize_or_fail(cloud, boundary, options);
+  assert_int_equal(log->calls, 0);
+  dbs_result_destroy(result);
+  free(log);
+  dbs_options_destroy(options);
+  dbs_boundary_destroy(boundary);
+  dbs_cloud_destroy(cloud);
+}
+
+static void clones_carry_the_callbacks(void **state) {
+  (void)state;
+  dbs_cloud *cloud = plane_cloud(11, 6);
+  dbs_boundary *boundary = plane_boundary(2);
+  dbs_options *options = NULL, *clone = NULL;
+  assert_ok(dbs_options_create(&options));
+  struct progress_log *log = new_progress_log();
+  assert_ok(dbs_options_set_progress(options, record_progress, log));
+  assert_ok(dbs_options_clone(options, &clone));
+  dbs_options_destroy(options);
+  dbs_result *result = parameterize_or_fail(cloud, boundary, clone);
+  assert_true(log->calls >= 2);
+  assert_true(log->fractions[log->calls - 1] == 1.0);
+  dbs_result_destroy(result);
+  free(log);
+  dbs_options_destroy(clone);
+  dbs_boundary_destroy(boundary);
+  dbs_cloud_destroy(cloud);
+}
+
+#define MAX_LEVELS 16
+
+struct level_log {
+  int32_t levels[MAX_LEVELS];
+  size_t counts[MAX_LEVELS];
+  size_t points[MAX_LEVELS]; /* sum over the level's patches of their subcloud sizes */
+  int consistent;            /* every patch read through the view agreed with the level */
+  size_t calls;
+  size_t cancel_at;
+  int wrong_thread;
+  pthread_t caller;
+};
+
+static int record_level(int32_t level, const dbs_patches *patches, void *payload) {
+  struct level_log *log = payload;
+  if (!pthread_equal(pthread_self(), log->caller)) log->wrong_thread = 1;
+  size_t count = 0;
+  if (dbs_patches_count(patches, &count) != DBS_OK) log->consistent = 0;
+  if (log->calls < MAX_LEVELS) {
+    log->levels[log->calls] = level;
+    log->counts[log->calls] = count;
+    log->points[log->calls] = 0;
+  }
+  for (size_t i = 0; i < count; ++i) {
+    int32_t patch_level = -1, nu = 0, nv = 0, iterations = 0;
+    size_t points = 0;
+    double rect[4], mean = -1, max = -1;
+    int ok = dbs_patches_level(patches, i, &patch_level) == DBS_OK && dbs_patches_rect(patches, i, rect) == DBS_OK &&
+             dbs_patches_grid_size(patches, i, &nu, &nv) == DBS_OK && dbs_patches_stats(patches, i, &points, &mean, &max, &iterations) == DBS_OK;
+    /* a level-L patch covers 1/2^L of [0,1] along each direction */
+    double side = 1.0 / (double)(1 << level);
+    if (!ok || patch_level != level || rect[2] - rect[0] != side || rect[3] - rect[1] != side || nu < 5 || nv < 5 || max < mean) log->consistent = 0;
+    if (log->calls < MAX_LEVELS) log->points[log->calls] += points;
+  }
+  int32_t beyond = 0;
+  if (dbs_patches_level(patches, count, &beyond) != DBS_ERR_OUT_OF_RANGE) log->consistent = 0;
+  ++log->calls;
+  return log->calls == log->cancel_at;
+}
+
+static struct level_log *new_level_log(void) {
+  struct level_log *log = calloc(1, sizeof *log);
+  assert_non_null(log);
+  log->consistent = 1;
+  log->caller = pthread_self();
+  return log;
+}
+
+static void level_callback_sees_every_level(void **state) {
+  (void)state;
+  dbs_cloud *cloud = bump_cloud(40, 0.2);
+  dbs_boundary *boundary = square_boundary(3);
+  dbs_options *options = subdividing_options();
+  struct level_log *log = new_level_log();
+  assert_ok(dbs_options_set_level_callback(options, record_level, log));
+  dbs_result *result = parameterize_or_fail(cloud, boundary, options);
+
+  double levels = 0, patches = 0;
+  assert_ok(dbs_result_stat(result, DBS_STAT_LEVELS, &levels));
+  assert_ok(dbs_result_stat(result, DBS_STAT_PATCHES, &patches));
+  assert_true(levels == 3.0); /* the bump needs every level it is allowed */
+  assert_int_equal(log->calls, 3);
+  assert_true(log->consistent);
+  assert_false(log->wrong_thread);
+  size_t total = 0;
+  for (size_t k = 0; k < log->calls; ++k) {
+    assert_int_equal(log->levels[k], (int32_t)k);
+    total += log->counts[k];
+  }
+  assert_int_equal(log->counts[0], 1);
+  assert_int_equal(log->points[0], 1600); /* the root holds the whole cloud */
+  assert_int_equal(log->counts[1], 4);
+  assert_true(total == (size_t)patches);
+
+  dbs_result_destroy(result);
+  free(log);
+  dbs_options_destroy(options);
+  dbs_boundary_destroy(boundary);
+  dbs_cloud_destroy(cloud);
+}
+
+static void level_callback_can_cancel(void **state) {
+  (void)state;
+  dbs_cloud *cloud = bump_cloud(40, 0.2);
+  dbs_boundary *boundary = square_boundary(3);
+  dbs_options *options = subdividing_options();
+  struct level_log *log = new_level_log();
+  struct progress_log *progress = new_progress_log();
+  assert_ok(dbs_options_set_level_callback(options, record_level, log));
+  assert_ok(dbs_options_set_progress(options, record_progress, progress));
+  for (size_t k = 1; k <= 3; ++k) {
+    log->calls = 0;
+    log->cancel_at = k;
+    progress->calls = 0;
+    dbs_result *result = NULL;
+    assert_failure(dbs_parameterize(cloud, boundary, options, &result), DBS_ERR_CANCELLED, "dbs_parameterize", "level callback");
+    assert_null(result);
+    assert_int_equal(log->calls, k);
+    /* the run stopped: progress never reached its end */
+    assert_true(progress->calls > 0 && progress->fractions[progress->calls - 1] < 1.0);
+  }
+  free(progress);
+  free(log);
+  dbs_options_destroy(options);
+  dbs_boundary_destroy(boundary);
+  dbs_cloud_destroy(cloud);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(progress_rises_to_exactly_one),
+      cmocka_unit_test(progress_can_cancel_at_any_call),
+      cmocka_unit_test(cleared_progress_is_not_called),
+      cmocka_unit_test(clones_carry_the_callbacks),
+      cmocka_unit_test(level_callback_sees_every_level),
+      cmocka_unit_test(level_callback_can_cancel),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,53 @@
+/* Shared helpers of the C API tests: test geometry, temporary files, status checks. */
+#ifndef DBS_CAPI_SUPPORT_H
+#define DBS_CAPI_SUPPORT_H
+
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include "dbs.h"
+
+/* The planar test case: the rectangle [0, W] x [0, H] in the plane z = Z, sampled on an
+ * nx x ny grid of points (boundary included). Its parameterization is the affine map
+ * u = x / W, v = y / H. */
+#define PLANE_W 2.0
+#define PLANE_H 1.0
+#define PLANE_Z 0.5
+
+/* nx * ny points of the plane, row by row (x fastest); the caller frees the array. */
+double *plane_points(int nx, int ny);
+/* The plane as a cloud; fails the test if creation fails. */
+dbs_cloud *plane_cloud(int nx, int ny);
+/* The plane's rectangle, each side with `per_side` evenly spaced points (>= 2). */
+dbs_boundary *plane_boundary(int per_side);
+
+/* The unit square with the height field z = amplitude * sin(pi x) sin(pi y), sampled on an
+ * n x n grid: a surface that one patch cannot fit to a small accuracy. */
+dbs_cloud *bump_cloud(int n, double amplitude);
+/* The unit square's boundary at z = 0, `per_side` points per side. */
+dbs_boundary *square_boundary(int per_side);
+
+/* Parameterizes, failing the test on any error; the caller destroys the result. */
+dbs_result *parameterize_or_fail(const dbs_cloud *cloud, const dbs_boundary *boundary, const dbs_options *options);
+
+/* A path in the test's temporary directory, unique to this process (DIR/PID_name); the file
+ * is removed when the program exits. */
+void temp_path(char *buffer, size_t size, const char *name);
+/* Writes `text` to `path`, failing the test if that is impossible. */
+void write_text(const char *path, const char *text);
+
+/* Asserts that `status` equals `expected` and that the thread's last error message starts
+ * with "function:" and contains `needle` (skipped when NULL); prints the message on failure. */
+#define assert_failure(status, expected, function, needle) \
+  check_failure((status), (expected), (function), (needle), __FILE__, __LINE__)
+void check_failure(int status, int expected, const char *function, const char *needle, const char *file, int line);
+
+/* Asserts DBS_OK, printing the last error message otherwise. */
+#define assert_ok(status) check_ok((status), #status, __FILE__, __LINE__)
+void check_ok(int status, const char *call, const char *file, int line);
+
+#endif
