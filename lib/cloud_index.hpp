@@ -22,12 +22,22 @@ class CloudIndex {
   const std::vector<Vec3>& points() const;
   /// Number of indexed points.
   std::size_t size() const;
+  /// Index into points() of the k-th indexed point (k < size()): k itself for a whole-cloud
+  /// index, subset[k] for a subset index.
+  std::size_t point_index(std::size_t k) const;
   /// Index (into points()) of the indexed point nearest to q. Requires size() > 0.
   std::size_t nearest(const Vec3& q) const;
   /// The k nearest indexed points, nearest first; out_d2 gets squared distances.
   void knn(const Vec3& q, std::size_t k, std::vector<std::size_t>& out_idx, std::vector<double>& out_d2) const;
   /// All indexed points within distance r of q (unordered; appended to out_idx after clearing).
   void radius(const Vec3& q, double r, std::vector<std::size_t>& out_idx) const;
+  /// All indexed points x with |x - p| * dist(x, line) <= bound, where line is the whole
+  /// line through p along n (n != 0, need not be unit) and bound has the dimension of an
+  /// area: the region where the weight of eq. (5) can exceed a threshold (see
+  /// DirectedProjector). A dedicated k-d tree descent prunes every node whose box cannot
+  /// hold such a point, so the cost follows the region, not the cloud. Unordered but
+  /// deterministic; appended to out_idx after clearing.
+  void near_ray(const Vec3& p, const Vec3& n, double bound, std::vector<std::size_t>& out_idx) const;
 
  private:
   struct Impl;

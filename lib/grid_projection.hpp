@@ -1,7 +1,9 @@
 // Grid projection (section 5.2): every row and every column of a grid on a base surface is
 // projected onto the cloud with the smooth curve projection (A3); each interior grid point
 // moves along its surface normal by the mean of its row and column offsets. Border points
-// stay on the boundary.
+// stay on the boundary. Each section is densified to nodes about 2 h apart (at most 512 per
+// section, so a very large patch gets a coarser spacing); sections are projected one after
+// the other (callers run patches in parallel), so the result is deterministic.
 #pragma once
 #include "base_surface.hpp"
 #include "curve_projection.hpp"

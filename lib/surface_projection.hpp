@@ -1,7 +1,10 @@
 // Orthogonal projection of points onto a base surface: the nearest foot, not a local
 // minimum. Start from the nearest of a dense set of surface samples (k-d tree over them),
-// refine with a bounded Newton iteration in (u,v) clamped to [0,1]^2; a foot pushed
-// against the border becomes the nearest boundary point.
+// refine with a Gauss-Newton iteration in (u,v) (step halving, clamped to [0,1]^2, a
+// coordinate on the border held there while the descent points outwards); a foot pushed
+// against the border becomes the nearest boundary point: each side is searched from its
+// nearest sample, and the nearest of the four results wins. project() is const and keeps no
+// scratch state: concurrent calls on one projector are safe.
 #pragma once
 #include <memory>
 #include <vector>

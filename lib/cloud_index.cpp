@@ -1,0 +1,200 @@
+#include "cloud_index.hpp"
+
+#include <Eigen/Geometry>
+#include <nanoflann.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "error.hpp"
+
+// near_ray() walks nanoflann's tree itself (its nodes, vAcc and root_bbox are public members);
+// their names are those of the 1.4 series.
+#if NANOFLANN_VERSION < 0x130 || NANOFLANN_VERSION >= 0x150
+#error "cloud_index.cpp expects nanoflann 1.3 or 1.4 (tree members vAcc, root_node, root_bbox)"
+#endif
+
+namespace dbs {
+
+namespace {
+
+/// The nanoflann dataset: the indexed points, all of them or points[subset[k]].
+struct Dataset {
+  const std::vector<Vec3>* points;
+  const std::vector<std::size_t>* subset;  // nullptr: every point
+
+  std::size_t map(std::size_t k) const { return subset ? (*subset)[k] : k; }
+  std::size_t kdtree_get_point_count() const { return subset ? subset->size() : points->size(); }
+  double kdtree_get_pt(std::uint32_t k, std::size_t dim) const { return (*points)[map(k)][static_cast<Eigen::Index>(dim)]; }
+  template <class Box>
+  bool kdtree_get_bbox(Box&) const {
+    return false;
+  }
+};
+
+using Metric = nanoflann::L2_Simple_Adaptor<double, Dataset, double, std::uint32_t>;
+using Tree = nanoflann::KDTreeSingleIndexAdaptor<Metric, Dataset, 3, std::uint32_t>;
+constexpr std::size_t kLeafSize = 12;
+
+/// Lower bounds over an axis-aligned box of |x - p| (the box's distance to p) and of the
+/// distance of x to the line p + s u (u unit). For the latter, any axis a perpendicular to u
+/// separates: the line projects onto a to the single value a.p, the box to an interval of
+/// half-width sum_i |a_i| e_i around a.c, and their gap bounds the distance from below. The
+/// axes tried are the direction from the line to the box centre and u x (each coordinate axis).
+struct RayBoxBound {
+  Vec3 p, u;
+  double bound;
+
+  bool may_hold(const Vec3& lo, const Vec3& hi) const {
+    const Vec3 outside = (lo - p).cwiseMax(p - hi).cwiseMax(0.0);
+    // The box point nearest p has r rho <= r^2 (distance to the line <= distance to p), so a
+    // box this close to p is kept without looking at the line.
+    const double r2_min = outside.squaredNorm();
+    if (r2_min <= bound) return true;
+    const double r_min = std::sqrt(r2_min);
+    const Vec3 half = 0.5 * (hi - lo);
+    const Vec3 offset = 0.5 * (lo + hi) - p;
+    double rho_min = 0.0;
+    auto separate = [&](const Vec3& axis) {
+      const double length = axis.norm();
+      if (length > 0.0) rho_min = std::max(rho_min, (std::abs(axis.dot(offset)) - axis.cwiseAbs().dot(half)) / length);
+    };
+    separate(offset - offset.dot(u) * u);
+    separate(Vec3(0.0, -u.z(), u.y()));
+    separate(Vec3(u.z(), 0.0, -u.x()));
+    separate(Vec3(-u.y(), u.x(), 0.0));
+    return r_min * rho_min <= bound;
+  }
+};
+
+}  // namespace
+
+struct CloudIndex::Impl {
+  const std::vector<Vec3>& points;
+  std::vector<std::size_t> subset;
+  Dataset dataset;
+  Tree tree;
+
+  Impl(const std::vector<Vec3>& pts, std::vector<std::size_t> sub, bool whole_cloud)
+      : points(pts),
+        subset(std::move(sub)),
+        dataset{&points, whole_cloud ? nullptr : &subset},
+        tree(3, dataset, nanoflann::KDTreeSingleIndexAdaptorParams(kLeafSize)) {}
+
+  void collect_near_ray(const Tree::Node* node, Vec3 lo, Vec3 hi, const RayBoxBound& query, std::vector<std::size_t>& out) const {
+    if (!query.may_hold(lo, hi)) return;
+    if (node->child1 == nullptr && node->child2 == nullptr) {
+      const double bound2 = query.bound * query.bound;
+      for (std::size_t i = node->node_type.lr.left; i < node->node_type.lr.right; ++i) {
+        const std::size_t index = dataset.map(tree.vAcc[i]);
+        const Vec3 d = points[index] - query.p;
+        if (d.squaredNorm() * d.cross(query.u).squaredNorm() <= bound2) out.push_back(index);
+      }
+      return;
+    }
+    const int axis = node->node_type.sub.divfeat;
+    Vec3 hi_low = hi, lo_high = lo;
+    hi_low[axis] = node->node_type.sub.divlow;
+    lo_high[axis] = node->node_type.sub.divhigh;
+    collect_near_ray(node->child1, lo, hi_low, query, out);
+    collect_near_ray(node->child2, lo_high, hi, query, out);
+  }
+};
+
+namespace {
+
+std::vector<std::size_t> checked_subset(const std::vector<Vec3>& points, std::vector<std::size_t> subset) {
+  if (points.size() > std::numeric_limits<std::uint32_t>::max()) fail(ErrorCode::OutOfRange, "CloudIndex: more than 2^32-1 points");
+  for (std::size_t k = 0; k < subset.size(); ++k)
+    if (subset[k] >= points.size())
+      fail(ErrorCode::OutOfRange, "CloudIndex: subset entry " + std::to_string(k) + " = " + std::to_string(subset[k]) + " is not below the point count " + std::to_string(points.size()));
+  return subset;
+}
+
+}  // namespace
+
+CloudIndex::CloudIndex(const std::vector<Vec3>& points) : impl_(std::make_unique<Impl>(points, checked_subset(points, {}), true)) {}
+
+CloudIndex::CloudIndex(const std::vector<Vec3>& points, std::vector<std::size_t> subset)
+    : impl_(std::make_unique<Impl>(points, checked_subset(points, std::move(subset)), false)) {}
+
+CloudIndex::~CloudIndex() = default;
+
+const std::vector<Vec3>& CloudIndex::points() const { return impl_->points; }
+
+std::size_t CloudIndex::size() const { return impl_->dataset.kdtree_get_point_count(); }
+
+std::size_t CloudIndex::point_index(std::size_t k) const { return impl_->dataset.map(k); }
+
+std::size_t CloudIndex::nearest(const Vec3& q) const {
+  if (size() == 0) fail(ErrorCode::Empty, "CloudIndex::nearest: the index holds no points");
+  std::uint32_t k = 0;
+  double d2 = 0.0;
+  nanoflann::KNNResultSet<double, std::uint32_t> result(1);
+  result.init(&k, &d2);
+  impl_->tree.findNeighbors(result, q.data(), nanoflann::SearchParams());
+  return impl_->dataset.map(k);
+}
+
+void CloudIndex::knn(const Vec3& q, std::size_t k, std::vector<std::size_t>& out_idx, std::vector<double>& out_d2) const {
+  out_idx.clear();
+  out_d2.clear();
+  k = std::min(k, size());
+  if (k == 0) return;
+  std::vector<std::uint32_t> found(k);
+  out_d2.resize(k);
+  const std::size_t count = impl_->tree.knnSearch(q.data(), k, found.data(), out_d2.data());
+  out_d2.resize(count);
+  out_idx.resize(count);
+  for (std::size_t i = 0; i < count; ++i) out_idx[i] = impl_->dataset.map(found[i]);
+}
+
+void CloudIndex::radius(const Vec3& q, double r, std::vector<std::size_t>& out_idx) const {
+  out_idx.clear();
+  if (size() == 0 || !(r >= 0.0)) return;
+  std::vector<std::pair<std::uint32_t, double>> found;
+  impl_->tree.radiusSearch(q.data(), r * r, found, nanoflann::SearchParams(32, 0.0f, false));
+  out_idx.reserve(found.size());
+  for (const auto& f : found) out_idx.push_back(impl_->dataset.map(f.first));
+}
+
+void CloudIndex::near_ray(const Vec3& p, const Vec3& n, double bound, std::vector<std::size_t>& out_idx) const {
+  out_idx.clear();
+  const double length = n.norm();
+  if (size() == 0 || !(length > 0.0)) return;
+  const RayBoxBound query{p, n / length, bound};
+  const auto& box = impl_->tree.root_bbox;
+  impl_->collect_near_ray(impl_->tree.root_node, Vec3(box[0].low, box[1].low, box[2].low), Vec3(box[0].high, box[1].high, box[2].high), query, out_idx);
+}
+
+double cloud_spacing(const CloudIndex& index, std::size_t max_samples) {
+  const std::size_t n = index.size();
+  const std::size_t samples = std::min(n, std::max<std::size_t>(max_samples, 1));
+  const std::vector<Vec3>& points = index.points();
+  std::vector<std::size_t> idx;
+  std::vector<double> d2;
+  double sum = 0.0;
+  std::size_t counted = 0;
+  for (std::size_t s = 0; s < samples; ++s) {
+    const Vec3& q = points[index.point_index(s * n / samples)];
+    // Widen the query until it reaches a point distinct from q (duplicates sit at d2 == 0).
+    for (std::size_t k = 2;; k = std::min(2 * k, n)) {
+      index.knn(q, k, idx, d2);
+      const auto distinct = std::find_if(d2.begin(), d2.end(), [](double v) { return v > 0.0; });
+      if (distinct != d2.end()) {
+        sum += std::sqrt(*distinct);
+        ++counted;
+        break;
+      }
+      if (k >= n) break;
+    }
+  }
+  if (counted == 0) fail(ErrorCode::Degenerate, "the cloud has fewer than two distinct points (" + std::to_string(n) + " points indexed)");
+  return sum / static_cast<double>(counted);
+}
+
+}  // namespace dbs

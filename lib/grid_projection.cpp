@@ -1,0 +1,66 @@
+#include "grid_projection.hpp"
+
+#include <algorithm>
+
+namespace dbs {
+
+namespace {
+
+/// Node spacing of a densified grid section, in units of h: a few nodes per data feature.
+constexpr double kNodeSpacing = 2.0;
+/// Most nodes in one section: bounds the cost of a section on a very large patch, where the
+/// spacing then grows beyond kNodeSpacing h.
+constexpr std::size_t kMaxSectionNodes = 512;
+
+/// A3 on one grid section (row or column): densify, project, read the offsets of the
+/// section's own points. Its two ends lie on the boundary and stay fixed.
+std::vector<double> project_section(const std::vector<Vec3>& points, const std::vector<Vec3>& normals, const DirectedProjector& projector, double gamma) {
+  double length = 0.0;
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) length += (points[k + 1] - points[k]).norm();
+  const double spacing = std::max(kNodeSpacing * projector.length_scale(), length / static_cast<double>(kMaxSectionNodes));
+  std::vector<std::size_t> original;
+  const CurveProjectionInput input = densify_polygon(points, normals, spacing, original, kMaxSectionNodes);
+  const std::vector<double> node_offsets = project_curve(projector, input, gamma);
+  std::vector<double> offsets(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) offsets[k] = node_offsets[original[k]];
+  return offsets;
+}
+
+}  // namespace
+
+Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProjector& projector, double gamma) {
+  Grid grid = surface.sample(nu, nv);
+  if (nu < 3 || nv < 3) return grid;
+  Grid normals(nu, nv);
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) normals(i, j) = surface.normal(grid.u(i), grid.v(j));
+
+  // Offsets of the interior points along their normals, from their row and their column.
+  std::vector<double> row_offset(grid.points.size(), 0.0), column_offset(grid.points.size(), 0.0);
+  std::vector<Vec3> points, directions;
+  for (int j = 1; j + 1 < nv; ++j) {
+    points.assign(grid.points.begin() + static_cast<std::ptrdiff_t>(j) * nu, grid.points.begin() + static_cast<std::ptrdiff_t>(j + 1) * nu);
+    directions.assign(normals.points.begin() + static_cast<std::ptrdiff_t>(j) * nu, normals.points.begin() + static_cast<std::ptrdiff_t>(j + 1) * nu);
+    const std::vector<double> t = project_section(points, directions, projector, gamma);
+    for (int i = 0; i < nu; ++i) row_offset[static_cast<std::size_t>(j) * nu + i] = t[i];
+  }
+  for (int i = 1; i + 1 < nu; ++i) {
+    points.clear();
+    directions.clear();
+    for (int j = 0; j < nv; ++j) {
+      points.push_back(grid(i, j));
+      directions.push_back(normals(i, j));
+    }
+    const std::vector<double> t = project_section(points, directions, projector, gamma);
+    for (int j = 0; j < nv; ++j) column_offset[static_cast<std::size_t>(j) * nu + i] = t[j];
+  }
+
+  for (int j = 1; j + 1 < nv; ++j)
+    for (int i = 1; i + 1 < nu; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * nu + i;
+      grid.points[k] += 0.5 * (row_offset[k] + column_offset[k]) * normals.points[k];
+    }
+  return grid;
+}
+
+}  // namespace dbs

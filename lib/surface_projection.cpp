@@ -1,0 +1,216 @@
+#include "surface_projection.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "cloud_index.hpp"
+#include "error.hpp"
+
+namespace dbs {
+
+namespace {
+
+constexpr int kMaxIterations = 50;
+constexpr int kMaxHalvings = 40;
+/// The iteration stops once the parameters are estimated to be this close to the foot.
+constexpr double kConverged = 1e-12;
+/// Steps in (u,v) shorter than this are taken without a line search (see take_step).
+constexpr double kNearFoot = 1e-6;
+/// Growth of |S - q|^2 that counts as rounding for a step near the foot, in units of
+/// epsilon |S - q| (|S| + |q|) (the rounding error of S - q, times 2 |S - q|, with margin).
+constexpr double kRoundingGrowth = 16.0;
+/// The residual S - q counts as leaving the patch through a side when the cosine of its
+/// angle with the inward tangent is below -kOutwardCosine; smaller angles are rounding.
+constexpr double kOutwardCosine = 1e-9;
+
+double clamp_unit(double x) { return std::min(1.0, std::max(0.0, x)); }
+
+/// Gauss-Newton converges linearly near the foot, with a rate r estimated from two
+/// successive step lengths; the distance left to the foot is then about step r / (1 - r).
+bool converged(double step, double previous) {
+  if (step <= kConverged) return true;
+  if (!std::isfinite(previous)) return false;
+  const double rate = step / previous;
+  return rate < 0.5 && step * rate / (1.0 - rate) <= kConverged;
+}
+
+/// True when coordinate c of x sits on a bound of [0,1] and the gradient g_c = S_c.(S - q)
+/// points out of the domain there (descent would leave the patch).
+bool pushes_out(double x, double g, double tangent_norm, double residual_norm) {
+  const double scale = kOutwardCosine * tangent_norm * residual_norm;
+  return (x <= 0.0 && g > scale) || (x >= 1.0 && g < -scale);
+}
+
+struct Iterate {
+  Vec2 x;
+  SurfacePoint s;
+  double f;  // |S - q|^2
+};
+
+}  // namespace
+
+struct SurfaceProjector::Impl {
+  const BaseSurface& surface;
+  int samples;
+  std::vector<Vec3> grid;  // samples x samples, u fastest
+  CloudIndex index;
+  /// Arc length of a side between two consecutive samples on it.
+  std::array<double, 4> side_step;
+
+  Impl(const BaseSurface& s, int n) : surface(s), samples(n), grid(s.sample(n, n).points), index(grid) {
+    for (int side = 0; side < 4; ++side) side_step[side] = surface.boundary().side(static_cast<Side>(side)).length() / (samples - 1);
+  }
+
+  static Vec2 gradient(const Vec3& q, const Iterate& it) {
+    const Vec3 r = it.s.p - q;
+    return Vec2(it.s.du.dot(r), it.s.dv.dot(r));
+  }
+
+  static std::array<bool, 2> held_coordinates(const Iterate& it, const Vec2& g) {
+    const double r_norm = std::sqrt(it.f);
+    return {{pushes_out(it.x.x(), g.x(), it.s.du.norm(), r_norm), pushes_out(it.x.y(), g.y(), it.s.dv.norm(), r_norm)}};
+  }
+
+  Iterate at(const Vec3& q, const Vec2& x) const {
+    Iterate it{x, surface.eval_derivs(x.x(), x.y()), 0.0};
+    it.f = (it.s.p - q).squaredNorm();
+    return it;
+  }
+
+  /// Moves `it` by `step` (clamped to the domain), halved until the distance does not grow;
+  /// false when no such step moves it. Near the foot (`trusted`) the step is taken as it is
+  /// unless |S - q|^2 grows by more than its rounding error: the decrease a tiny step brings
+  /// is below that resolution, so a strict line search would stall there (and would stall
+  /// differently for a moved and scaled copy of the same input).
+  bool take_step(const Vec3& q, Iterate& it, Vec2 step, bool trusted) const {
+    const double rounding = kRoundingGrowth * std::numeric_limits<double>::epsilon() * std::sqrt(it.f) * (q.norm() + it.s.p.norm());
+    for (int halving = 0; halving < kMaxHalvings; ++halving, step *= 0.5) {
+      const Vec2 x(clamp_unit(it.x.x() + step.x()), clamp_unit(it.x.y() + step.y()));
+      if (x == it.x) return false;
+      const Iterate trial = at(q, x);
+      if (trial.f <= it.f || (trusted && trial.f <= it.f + rounding)) {
+        it = trial;
+        return true;
+      }
+      if (trusted) return false;
+    }
+    return false;
+  }
+
+  /// Gauss-Newton on |S(u,v) - q|^2 over [0,1]^2 with an active set: a coordinate on a bound
+  /// whose gradient points outward is held there and the other one moves alone. Each step
+  /// is clamped to the domain and halved until the distance decreases.
+  Iterate descend(const Vec3& q, Iterate it, std::array<bool, 2>& held) const {
+    double previous = std::numeric_limits<double>::infinity();
+    for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
+      const Vec2 g = gradient(q, it);
+      held = held_coordinates(it, g);
+      const double huu = it.s.du.squaredNorm(), hvv = it.s.dv.squaredNorm(), huv = it.s.du.dot(it.s.dv);
+      Vec2 step = Vec2::Zero();
+      if (!held[0] && !held[1]) {
+        const double det = huu * hvv - huv * huv;
+        // A degenerate Jacobian (collapsed corner) falls back to a scaled gradient step.
+        if (det > 1e-14 * huu * hvv)
+          step = Vec2(-(hvv * g.x() - huv * g.y()) / det, -(huu * g.y() - huv * g.x()) / det);
+        else if (huu + hvv > 0.0)
+          step = -g / (huu + hvv);
+      } else if (!held[0] && huu > 0.0) {
+        step.x() = -g.x() / huu;
+      } else if (!held[1] && hvv > 0.0) {
+        step.y() = -g.y() / hvv;
+      }
+      const double length = step.norm();
+      if (!(length > 0.0) || !take_step(q, it, step, length <= kNearFoot)) break;
+      if (converged(length, previous)) break;
+      previous = length;
+    }
+    held = held_coordinates(it, gradient(q, it));
+    return it;
+  }
+
+  /// Local minimum of |S - q| along one side, from that side's nearest sample.
+  Iterate along_side(const Vec3& q, Side side, int sample) const {
+    const double s = static_cast<double>(sample) / (samples - 1);
+    Vec2 x;
+    switch (side) {
+      case Side::Bottom: x = Vec2(s, 0.0); break;
+      case Side::Right: x = Vec2(1.0, s); break;
+      case Side::Top: x = Vec2(s, 1.0); break;
+      case Side::Left: x = Vec2(0.0, s); break;
+    }
+    const bool along_u = side == Side::Bottom || side == Side::Top;
+    Iterate it = at(q, x);
+    double previous = std::numeric_limits<double>::infinity();
+    for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
+      const Vec3& tangent = along_u ? it.s.du : it.s.dv;
+      const double h = tangent.squaredNorm();
+      if (!(h > 0.0)) break;
+      const double step = -tangent.dot(it.s.p - q) / h, length = std::abs(step);
+      if (!(length > 0.0) || !take_step(q, it, along_u ? Vec2(step, 0.0) : Vec2(0.0, step), length <= kNearFoot)) break;
+      if (converged(length, previous)) break;
+      previous = length;
+    }
+    return it;
+  }
+
+  /// Nearest point of the four sides: each side starts from its nearest sample; a side whose
+  /// samples are all farther than the best foot found plus half a sample step cannot win.
+  Iterate nearest_on_boundary(const Vec3& q) const {
+    const int last = samples - 1;
+    auto sample_point = [&](Side side, int k) -> const Vec3& {
+      switch (side) {
+        case Side::Bottom: return grid[k];
+        case Side::Right: return grid[static_cast<std::size_t>(k) * samples + last];
+        case Side::Top: return grid[static_cast<std::size_t>(last) * samples + k];
+        default: return grid[static_cast<std::size_t>(k) * samples];
+      }
+    };
+    std::array<std::pair<double, int>, 4> nearest_sample;
+    for (int side = 0; side < 4; ++side) {
+      nearest_sample[side] = {std::numeric_limits<double>::infinity(), 0};
+      for (int k = 0; k < samples; ++k) {
+        const double d = (sample_point(static_cast<Side>(side), k) - q).norm();
+        if (d < nearest_sample[side].first) nearest_sample[side] = {d, k};
+      }
+    }
+    std::array<int, 4> order{{0, 1, 2, 3}};
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return nearest_sample[a].first < nearest_sample[b].first || (nearest_sample[a].first == nearest_sample[b].first && a < b); });
+    Iterate best;
+    best.f = std::numeric_limits<double>::infinity();
+    for (int side : order) {
+      if (nearest_sample[side].first - 0.5 * side_step[side] >= std::sqrt(best.f)) continue;
+      const Iterate it = along_side(q, static_cast<Side>(side), nearest_sample[side].second);
+      if (it.f < best.f) best = it;
+    }
+    return best;
+  }
+};
+
+SurfaceProjector::SurfaceProjector(const BaseSurface& surface, int samples) {
+  if (samples < 2) fail(ErrorCode::InvalidArgument, "SurfaceProjector: samples = " + std::to_string(samples) + ", at least 2 needed");
+  impl_ = std::make_unique<Impl>(surface, samples);
+}
+
+SurfaceProjector::~SurfaceProjector() = default;
+
+Foot SurfaceProjector::project(const Vec3& q) const {
+  if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::project: the point is not finite");
+  const Impl& m = *impl_;
+  const std::size_t k = m.index.nearest(q);
+  const Vec2 start(static_cast<double>(k % m.samples) / (m.samples - 1), static_cast<double>(k / m.samples) / (m.samples - 1));
+  std::array<bool, 2> held{{false, false}};
+  Iterate it = m.descend(q, m.at(q, start), held);
+  Foot foot;
+  foot.inside = !held[0] && !held[1];
+  if (!foot.inside) it = m.nearest_on_boundary(q);
+  foot.u = it.x.x();
+  foot.v = it.x.y();
+  foot.point = it.s.p;
+  foot.distance = std::sqrt(it.f);
+  return foot;
+}
+
+}  // namespace dbs

@@ -1,0 +1,197 @@
+// The cloud index: k nearest, radius and ray-neighbourhood queries agree with brute force on
+// random clouds and subsets (answers are indices into the full cloud), and the length scale h
+// is the pitch of a regular grid, ignores duplicates and scales exactly with the input.
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <utility>
+
+#include "cloud_index.hpp"
+#include "error.hpp"
+
+// cmocka last (its fail() macro would hide dbs::fail), with C linkage (its header does
+// not declare it).
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+extern "C" {
+#include <cmocka.h>
+}
+
+using namespace dbs;
+
+namespace {
+
+std::vector<Vec3> random_cloud(std::size_t n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<Vec3> pts(n);
+  for (Vec3& p : pts) p = Vec3(unit(rng), unit(rng), 0.3 * unit(rng));
+  return pts;
+}
+
+/// Brute-force k nearest among `candidates` (indices into pts), nearest first.
+std::vector<std::pair<double, std::size_t>> brute_knn(const std::vector<Vec3>& pts, const std::vector<std::size_t>& candidates, const Vec3& q, std::size_t k) {
+  std::vector<std::pair<double, std::size_t>> all;
+  for (std::size_t i : candidates) all.emplace_back((pts[i] - q).squaredNorm(), i);
+  std::sort(all.begin(), all.end());
+  all.resize(std::min(k, all.size()));
+  return all;
+}
+
+std::vector<std::size_t> iota(std::size_t n) {
+  std::vector<std::size_t> v(n);
+  for (std::size_t i = 0; i < n; ++i) v[i] = i;
+  return v;
+}
+
+void check_queries(const CloudIndex& index, const std::vector<std::size_t>& members, unsigned seed) {
+  const std::vector<Vec3>& pts = index.points();
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.2, 1.2);
+  std::vector<std::size_t> idx;
+  std::vector<double> d2;
+  for (int query = 0; query < 60; ++query) {
+    const Vec3 q(unit(rng), unit(rng), 0.5 * unit(rng));
+    for (std::size_t k : {1u, 7u, 40u}) {
+      index.knn(q, k, idx, d2);
+      const auto expected = brute_knn(pts, members, q, k);
+      assert_int_equal(idx.size(), expected.size());
+      for (std::size_t i = 0; i < idx.size(); ++i) {
+        assert_int_equal(idx[i], expected[i].second);
+        assert_true(std::abs(d2[i] - expected[i].first) <= 1e-15);
+      }
+    }
+    assert_int_equal(index.nearest(q), brute_knn(pts, members, q, 1)[0].second);
+
+    const double r = 0.05 + 0.3 * (query % 5);
+    index.radius(q, r, idx);
+    std::vector<std::size_t> expected;
+    for (std::size_t i : members)
+      if ((pts[i] - q).norm() < r) expected.push_back(i);
+    std::sort(idx.begin(), idx.end());
+    assert_true(idx == expected);
+
+    // The ray neighbourhood: |x - p| * distance(x, line) <= bound.
+    const Vec3 n(unit(rng), unit(rng), unit(rng) + 2.0);
+    const double bound = 0.002 * (1 + query % 7);
+    index.near_ray(q, n, bound, idx);
+    expected.clear();
+    const Vec3 u = n.normalized();
+    for (std::size_t i : members) {
+      const Vec3 d = pts[i] - q;
+      if (d.squaredNorm() * d.cross(u).squaredNorm() <= bound * bound) expected.push_back(i);
+    }
+    std::sort(idx.begin(), idx.end());
+    assert_true(idx == expected);
+    assert_true(expected.size() < members.size());  // the query prunes: not the whole cloud
+  }
+}
+
+void whole_cloud_queries_match_brute_force(void**) {
+  const std::vector<Vec3> pts = random_cloud(3000, 1);
+  CloudIndex index(pts);
+  assert_int_equal(index.size(), 3000);
+  assert_int_equal(index.point_index(1234), 1234);
+  check_queries(index, iota(pts.size()), 2);
+}
+
+void subset_queries_answer_full_cloud_indices(void**) {
+  const std::vector<Vec3> pts = random_cloud(4000, 3);
+  std::vector<std::size_t> subset;
+  for (std::size_t i = 0; i < pts.size(); i += 3) subset.push_back(i);
+  CloudIndex index(pts, subset);
+  assert_int_equal(index.size(), subset.size());
+  assert_int_equal(index.point_index(10), 30);
+  check_queries(index, subset, 4);
+}
+
+/// nx x ny points of pitch a in a tilted plane through `origin`.
+std::vector<Vec3> grid_cloud(int nx, int ny, double a, const Vec3& origin) {
+  const Eigen::Matrix3d tilt = Eigen::AngleAxisd(0.4, Vec3(1, 1, 0).normalized()).toRotationMatrix();
+  std::vector<Vec3> pts;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) pts.push_back(origin + tilt * Vec3(i * a, j * a, 0.0));
+  return pts;
+}
+
+void spacing_is_the_pitch_of_a_grid(void**) {
+  const double a = 0.37;
+  const std::vector<Vec3> pts = grid_cloud(60, 45, a, Vec3(2, -1, 3));
+  CloudIndex index(pts);
+  assert_true(std::abs(cloud_spacing(index) - a) <= 1e-12 * a);
+  assert_true(std::abs(cloud_spacing(index, 100) - a) <= 1e-12 * a);  // strided samples
+
+  // Every point twice: exact duplicates are skipped, the next distinct neighbour counts.
+  std::vector<Vec3> doubled = pts;
+  doubled.insert(doubled.end(), pts.begin(), pts.end());
+  CloudIndex doubled_index(doubled);
+  assert_true(std::abs(cloud_spacing(doubled_index) - a) <= 1e-12 * a);
+}
+
+void spacing_scales_exactly(void**) {
+  const std::vector<Vec3> pts = random_cloud(5000, 5);
+  std::vector<Vec3> scaled;
+  for (const Vec3& p : pts) scaled.push_back(1000.0 * p);
+  CloudIndex index(pts), scaled_index(scaled);
+  const double h = cloud_spacing(index), h_scaled = cloud_spacing(scaled_index);
+  assert_true(h > 0.0);
+  assert_true(std::abs(h_scaled - 1000.0 * h) <= 1e-12 * h_scaled);
+  // Deterministic: the same cloud gives bitwise the same h.
+  CloudIndex again(pts);
+  assert_true(cloud_spacing(again) == h);
+}
+
+void errors_name_the_problem(void**) {
+  const std::vector<Vec3> pts = random_cloud(10, 6);
+  bool thrown = false;
+  try {
+    CloudIndex bad(pts, {1, 2, 10});
+  } catch (const Error& e) {
+    thrown = e.code() == ErrorCode::OutOfRange && std::string(e.what()).find("subset entry 2") != std::string::npos;
+  }
+  assert_true(thrown);
+
+  CloudIndex empty(pts, {});
+  assert_int_equal(empty.size(), 0);
+  std::vector<std::size_t> idx{1};
+  std::vector<double> d2;
+  empty.knn(Vec3::Zero(), 3, idx, d2);
+  assert_true(idx.empty() && d2.empty());
+  empty.near_ray(Vec3::Zero(), Vec3::UnitZ(), 1.0, idx);
+  assert_true(idx.empty());
+  thrown = false;
+  try {
+    empty.nearest(Vec3::Zero());
+  } catch (const Error& e) {
+    thrown = e.code() == ErrorCode::Empty;
+  }
+  assert_true(thrown);
+
+  const std::vector<Vec3> same(5, Vec3(1, 2, 3));
+  CloudIndex same_index(same);
+  thrown = false;
+  try {
+    cloud_spacing(same_index);
+  } catch (const Error& e) {
+    thrown = e.code() == ErrorCode::Degenerate;
+  }
+  assert_true(thrown);
+}
+
+}  // namespace
+
+int main() {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(whole_cloud_queries_match_brute_force),
+      cmocka_unit_test(subset_queries_answer_full_cloud_indices),
+      cmocka_unit_test(spacing_is_the_pitch_of_a_grid),
+      cmocka_unit_test(spacing_scales_exactly),
+      cmocka_unit_test(errors_name_the_problem),
+  };
+  return cmocka_run_group_tests(tests, nullptr, nullptr);
+}

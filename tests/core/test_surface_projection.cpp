@@ -1,0 +1,265 @@
+// Orthogonal projection onto a base surface: the affine inverse on a planar patch, the
+// nearest boundary point (inside = false) beyond the border, the nearer arm of a U-shaped
+// trough whose arms face each other, (u,v) recovered on a curved surface, invariance to
+// scaling by 1000 plus a rigid motion, and concurrent calls that agree bit for bit with
+// serial ones.
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include "error.hpp"
+#include "parallel.hpp"
+#include "surface_projection.hpp"
+
+// cmocka last (its fail() macro would hide dbs::fail), with C linkage (its header does
+// not declare it).
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+extern "C" {
+#include <cmocka.h>
+}
+
+using namespace dbs;
+
+namespace {
+
+std::vector<Vec3> segment(const Vec3& a, const Vec3& b, int pieces) {
+  std::vector<Vec3> pts;
+  for (int k = 0; k <= pieces; ++k) pts.push_back(a + (static_cast<double>(k) / pieces) * (b - a));
+  return pts;
+}
+
+/// A 3 x 2 rectangle in a tilted plane: S(u,v) = origin + u a + v b.
+struct Rectangle {
+  Vec3 origin{1.0, -2.0, 0.5};
+  Vec3 a, b, normal;
+  Rectangle() {
+    const Eigen::Matrix3d tilt = Eigen::AngleAxisd(0.6, Vec3(1, -2, 0.5).normalized()).toRotationMatrix();
+    a = tilt * Vec3(3, 0, 0);
+    b = tilt * Vec3(0, 2, 0);
+    normal = a.cross(b).normalized();
+  }
+  Vec3 at(double u, double v) const { return origin + u * a + v * b; }
+  BaseSurface surface() const {
+    return BaseSurface(Boundary(segment(at(0, 0), at(1, 0), 3), segment(at(1, 0), at(1, 1), 2), segment(at(0, 1), at(1, 1), 5), segment(at(0, 0), at(0, 1), 1)));
+  }
+};
+
+void planar_patch_inverts_the_affine_map(void**) {
+  const Rectangle rect;
+  const BaseSurface surface = rect.surface();
+  const SurfaceProjector projector(surface);
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), lift(-0.8, 0.8);
+  for (int k = 0; k < 2000; ++k) {
+    const double u = unit(rng), v = unit(rng), z = lift(rng);
+    const Foot foot = projector.project(rect.at(u, v) + z * rect.normal);
+    assert_true(foot.inside);
+    assert_true(std::abs(foot.u - u) <= 1e-12 && std::abs(foot.v - v) <= 1e-12);
+    assert_true(std::abs(foot.distance - std::abs(z)) <= 1e-12);
+    assert_true((foot.point - rect.at(u, v)).norm() <= 1e-12);
+  }
+}
+
+void points_beyond_the_border_get_the_nearest_boundary_point(void**) {
+  const Rectangle rect;
+  const BaseSurface surface = rect.surface();
+  const SurfaceProjector projector(surface);
+  std::mt19937_64 rng(2);
+  std::uniform_real_distribution<double> wide(-0.6, 1.6), lift(-0.5, 0.5);
+  int outside = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const double u = wide(rng), v = wide(rng);
+    if (u >= 0 && u <= 1 && v >= 0 && v <= 1) continue;
+    ++outside;
+    const Vec3 q = rect.at(u, v) + lift(rng) * rect.normal;
+    const Foot foot = projector.project(q);
+    // For a rectangle the nearest boundary point has the clamped parameters.
+    const double cu = std::clamp(u, 0.0, 1.0), cv = std::clamp(v, 0.0, 1.0);
+    assert_false(foot.inside);
+    assert_true(std::abs(foot.u - cu) <= 1e-12 && std::abs(foot.v - cv) <= 1e-12);
+    assert_true((foot.point - rect.at(cu, cv)).norm() <= 1e-12);
+    assert_true(std::abs(foot.distance - (q - rect.at(cu, cv)).norm()) <= 1e-12);
+  }
+  assert_true(outside > 1500);
+}
+
+/// A trough: the profile runs down the wall x = -1 (z from 2 to 0), round the half circle
+/// below, up the wall x = +1 (z from 0 to 6); extruded along y over [0, 3]. The walls face
+/// each other 2 apart. Its parameter centre u = 1/2 lies on the right wall, so a local
+/// search started there would end on the right wall for every point.
+struct Trough {
+  static constexpr double kLeftTop = 2.0, kRightTop = 6.0;
+  std::vector<Vec3> profile(double y) const {
+    std::vector<Vec3> pts = segment(Vec3(-1, y, kLeftTop), Vec3(-1, y, 0), 4);
+    for (int k = 1; k < 48; ++k) {
+      const double angle = M_PI + M_PI * k / 48.0;
+      pts.emplace_back(std::cos(angle), y, std::sin(angle));
+    }
+    for (const Vec3& p : segment(Vec3(1, y, 0), Vec3(1, y, kRightTop), 12)) pts.push_back(p);
+    return pts;
+  }
+  double length() const {
+    const std::vector<Vec3> p = profile(0.0);
+    double l = 0.0;
+    for (std::size_t k = 0; k + 1 < p.size(); ++k) l += (p[k + 1] - p[k]).norm();
+    return l;
+  }
+  BaseSurface surface() const {
+    return BaseSurface(Boundary(profile(0.0), segment(Vec3(1, 0, kRightTop), Vec3(1, 3, kRightTop), 1), profile(3.0), segment(Vec3(-1, 0, kLeftTop), Vec3(-1, 3, kLeftTop), 1)));
+  }
+};
+
+void points_between_the_arms_go_to_the_nearer_arm(void**) {
+  const Trough trough;
+  const BaseSurface surface = trough.surface();
+  const SurfaceProjector projector(surface);
+  const double length = trough.length();
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> across(0.1, 0.9), along(0.0, 3.0), height(0.3, 1.8), side(0.0, 1.0);
+  for (int k = 0; k < 3000; ++k) {
+    const double x = (side(rng) < 0.5 ? -1.0 : 1.0) * across(rng), y = along(rng), z = height(rng);
+    const Foot foot = projector.project(Vec3(x, y, z));
+    const double wall = x < 0 ? -1.0 : 1.0;
+    assert_true(foot.inside);
+    assert_true((foot.point - Vec3(wall, y, z)).norm() <= 1e-9);
+    assert_true(std::abs(foot.distance - (1.0 - std::abs(x))) <= 1e-9);
+    const double arc = wall < 0 ? Trough::kLeftTop - z : length - (Trough::kRightTop - z);
+    assert_true(std::abs(foot.u - arc / length) <= 1e-9);
+    assert_true(std::abs(foot.v - y / 3.0) <= 1e-9);
+  }
+}
+
+/// A doubly curved surface: a Coons square with a smooth interpolated bump of height 0.35.
+BaseSurface curved_surface() {
+  const Boundary boundary(segment(Vec3(0, 0, 0), Vec3(2, 0, 0.3), 1), segment(Vec3(2, 0, 0.3), Vec3(2, 2, 0), 1), segment(Vec3(0, 2, -0.2), Vec3(2, 2, 0), 1), segment(Vec3(0, 0, 0), Vec3(0, 2, -0.2), 1));
+  const BaseSurface coons(boundary);
+  Grid grid = coons.sample(7, 7);
+  for (int j = 1; j < 6; ++j)
+    for (int i = 1; i < 6; ++i) grid(i, j).z() += 0.35 * std::sin(M_PI * grid.u(i)) * std::sin(M_PI * grid.v(j)) + 0.1 * std::cos(3.0 * grid.u(i) + grid.v(j));
+  return BaseSurface(boundary, grid);
+}
+
+void curved_surface_parameters_are_recovered(void**) {
+  const BaseSurface surface = curved_surface();
+  const SurfaceProjector projector(surface);
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), lift(-0.05, 0.05);
+  double worst = 0.0;
+  for (int k = 0; k < 3000; ++k) {
+    const double u = unit(rng), v = unit(rng);
+    // Half the points on the surface, half off it along the normal.
+    const double z = k % 2 ? lift(rng) : 0.0;
+    const Vec3 q = surface.eval(u, v) + z * surface.normal(u, v);
+    const Foot foot = projector.project(q);
+    assert_true(foot.inside);
+    worst = std::max({worst, std::abs(foot.u - u), std::abs(foot.v - v)});
+    assert_true(std::abs(foot.distance - std::abs(z)) <= 1e-9);
+  }
+  assert_true(worst <= 1e-9);
+}
+
+Vec3 move(const Vec3& p) {
+  static const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  return 1000.0 * (rotation * p + Vec3(5.0, -3.0, 2.0));
+}
+
+std::vector<Vec3> moved(std::vector<Vec3> pts) {
+  for (Vec3& p : pts) p = move(p);
+  return pts;
+}
+
+/// Worst difference of (u,v) and of distance / 1000 between projecting q onto `surface` and
+/// move(q) onto `moved_surface`; asserts equal `inside` flags.
+double invariance_error(const BaseSurface& surface, const BaseSurface& moved_surface, const std::vector<Vec3>& queries) {
+  const SurfaceProjector projector(surface), moved_projector(moved_surface);
+  double worst = 0.0;
+  for (const Vec3& q : queries) {
+    const Foot a = projector.project(q), b = moved_projector.project(move(q));
+    assert_true(a.inside == b.inside);
+    worst = std::max({worst, std::abs(a.u - b.u), std::abs(a.v - b.v), std::abs(b.distance / 1000.0 - a.distance)});
+  }
+  return worst;
+}
+
+void projection_is_invariant_to_scale_and_rigid_motion(void**) {
+  std::mt19937_64 rng(6);
+  // The curved surface (its grid moves with it), queried 1e-5 to 0.1 off it: the distances
+  // are small against the moved coordinates, where rounding could stop the iteration early.
+  const BaseSurface curved = curved_surface();
+  const Boundary& b = curved.boundary();
+  Grid grid = curved.sample(7, 7);
+  for (Vec3& p : grid.points) p = move(p);
+  const BaseSurface moved_curved(Boundary(moved(b.bottom().points()), moved(b.right().points()), moved(b.top().points()), moved(b.left().points())), grid);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), log_lift(-5.0, -1.0);
+  std::vector<Vec3> near;
+  for (int k = 0; k < 2000; ++k) {
+    const double u = unit(rng), v = unit(rng), z = (k % 2 ? 1.0 : -1.0) * std::pow(10.0, log_lift(rng));
+    near.push_back(curved.eval(u, v) + z * curved.normal(u, v));
+  }
+  assert_true(invariance_error(curved, moved_curved, near) <= 1e-12);
+
+  // The trough (polyline sides: its Coons patch has kinks), queried all around it.
+  const Trough trough;
+  const BaseSurface moved_trough(Boundary(moved(trough.profile(0.0)), moved(segment(Vec3(1, 0, Trough::kRightTop), Vec3(1, 3, Trough::kRightTop), 1)), moved(trough.profile(3.0)),
+                                          moved(segment(Vec3(-1, 0, Trough::kLeftTop), Vec3(-1, 3, Trough::kLeftTop), 1))));
+  std::uniform_real_distribution<double> x(-1.5, 1.5), y(-0.5, 3.5), z(-1.5, 6.5);
+  std::vector<Vec3> around;
+  for (int k = 0; k < 2000; ++k) around.emplace_back(x(rng), y(rng), z(rng));
+  assert_true(invariance_error(trough.surface(), moved_trough, around) <= 1e-12);
+}
+
+void concurrent_calls_match_serial_ones(void**) {
+  const BaseSurface surface = curved_surface();
+  const SurfaceProjector projector(surface);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> coord(-0.5, 2.5);
+  std::vector<Vec3> queries(4000);
+  for (Vec3& q : queries) q = Vec3(coord(rng), coord(rng), 0.4 * coord(rng));
+  std::vector<Foot> serial(queries.size()), parallel(queries.size());
+  for (std::size_t i = 0; i < queries.size(); ++i) serial[i] = projector.project(queries[i]);
+  parallel_for(queries.size(), 4, [&](std::size_t i) { parallel[i] = projector.project(queries[i]); });
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    assert_true(serial[i].u == parallel[i].u && serial[i].v == parallel[i].v && serial[i].distance == parallel[i].distance);
+    assert_true(serial[i].inside == parallel[i].inside);
+  }
+}
+
+void bad_input_is_rejected(void**) {
+  const BaseSurface surface = Rectangle().surface();
+  bool thrown = false;
+  try {
+    SurfaceProjector(surface, 1);
+  } catch (const Error& e) {
+    thrown = e.code() == ErrorCode::InvalidArgument;
+  }
+  assert_true(thrown);
+  const SurfaceProjector projector(surface);
+  thrown = false;
+  try {
+    projector.project(Vec3(0, NAN, 0));
+  } catch (const Error& e) {
+    thrown = e.code() == ErrorCode::NonFinite;
+  }
+  assert_true(thrown);
+}
+
+}  // namespace
+
+int main() {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(planar_patch_inverts_the_affine_map),
+      cmocka_unit_test(points_beyond_the_border_get_the_nearest_boundary_point),
+      cmocka_unit_test(points_between_the_arms_go_to_the_nearer_arm),
+      cmocka_unit_test(curved_surface_parameters_are_recovered),
+      cmocka_unit_test(projection_is_invariant_to_scale_and_rigid_motion),
+      cmocka_unit_test(concurrent_calls_match_serial_ones),
+      cmocka_unit_test(bad_input_is_rejected),
+  };
+  return cmocka_run_group_tests(tests, nullptr, nullptr);
+}
