@@ -133,14 +133,17 @@ DBS_API int dbs_boundary_side_points(const dbs_boundary *boundary, int32_t side,
 /* ---- options ------------------------------------------------------------------ */
 typedef struct dbs_options dbs_options;
 
-/* Option ids (pinned). Each comment: type, default, range. */
+/* Option ids (pinned). Each comment: type, default, range. The typed setters and getters
+ * refuse an option of the other type (DBS_ERR_INVALID_ARGUMENT). Because of the two cross
+ * rules (initial grid <= max grid, own <= near), order matters: raise DBS_OPT_MAX_GRID before
+ * setting DBS_OPT_INITIAL_GRID above it. */
 #define DBS_OPT_ACCURACY 0          /* double; 0 = unset; >= 0. Mean-distance target in cloud units. */
 #define DBS_OPT_RELATIVE_ACCURACY 1 /* double; 1e-3; [1e-9, 1]. Target as a fraction of the cloud's bounding-box diagonal, used while DBS_OPT_ACCURACY is 0. */
 #define DBS_OPT_MAX_LEVEL 2         /* int; 4; [0, 8]. Quadtree depth; 0 = a single base surface. */
 #define DBS_OPT_INITIAL_GRID 3      /* int; 5; [3, 100]. Grid points per side of a new patch. */
 #define DBS_OPT_MAX_GRID 4          /* int; 11; [3, 200], >= initial grid. Largest grid before subdividing. */
 #define DBS_OPT_SMOOTHING 5         /* double; 0.5; [0, 0.99]. Weight gamma of eq. (6). */
-#define DBS_OPT_SOLVER 6            /* int; DBS_SOLVER_LINEAR. */
+#define DBS_OPT_SOLVER 6            /* int; DBS_SOLVER_LINEAR; [0, 1]. */
 #define DBS_OPT_THREADS 7           /* int; 0 = all hardware threads; [0, 256]. Output never depends on it. */
 #define DBS_OPT_SUBCLOUD_NEAR 8     /* double; 0.25; (0, 10]. A4.3 "near" limit, fraction of the child's diagonal. */
 #define DBS_OPT_SUBCLOUD_OWN 9      /* double; 0.05; [0, 10], <= near. A4.4 "own" limit, fraction of the child's diagonal. */
@@ -170,7 +173,9 @@ DBS_API int dbs_options_get_int(const dbs_options *options, int32_t option, int3
 /** Real options (DBS_OPT_ACCURACY, _RELATIVE_ACCURACY, _SMOOTHING, _SUBCLOUD_NEAR, _SUBCLOUD_OWN). */
 DBS_API int dbs_options_set_double(dbs_options *options, int32_t option, double value);
 DBS_API int dbs_options_get_double(const dbs_options *options, int32_t option, double *out);
-/** Documented range of any option (integer options report theirs as doubles). */
+/** Documented range of any option (integer options report theirs as doubles). An open end
+ *  is reported as its limit (DBS_OPT_SUBCLOUD_NEAR: min 0, which itself is refused) and a
+ *  missing upper end as DBL_MAX (DBS_OPT_ACCURACY). */
 DBS_API int dbs_option_bounds(int32_t option, double *out_min, double *out_max);
 /** Sets (or with fn == NULL clears) the progress callback. */
 DBS_API int dbs_options_set_progress(dbs_options *options, dbs_progress_fn fn, void *payload);
@@ -238,6 +243,123 @@ DBS_API int dbs_patches_boundary_count(const dbs_patches *patches, size_t i, int
 DBS_API int dbs_patches_boundary_points(const dbs_patches *patches, size_t i, int32_t side, double *out_xyz, size_t capacity);
 /** Points of the patch's subcloud, their mean and max distance to the patch, grid evolutions. */
 DBS_API int dbs_patches_stats(const dbs_patches *patches, size_t i, size_t *out_points, double *out_mean, double *out_max, int32_t *out_iterations);
+
+/* ---- validation ------------------------------------------------------------------- */
+/* The four judgements of a parameterization of the paper's section 7, as numbers and files:
+ * (a) a mesh of the cloud from the 2D Delaunay triangulation of its (u,v), with the triangles
+ * that bridge across the surface flagged; (b) how much each triangle is distorted between 3D
+ * and (u,v); (c) a texture of black disks mapped through (u,v) (dbs_mesh_save and the
+ * report); (d) the point-to-surface distances, per leaf patch and overall. */
+typedef struct dbs_mesh dbs_mesh;
+
+/** A triangle is suspicious when one of its 3D edges is longer than this many times the
+ *  local spacing of both its end points (a point's distance to its 6th nearest other point). */
+#define DBS_MESH_SUSPICIOUS_FACTOR 4.0
+
+/** Triangulates the result's (u,v) in the plane (2D Delaunay, Qhull) and takes the triangles
+ *  over `cloud`, the cloud that was parameterized: vertex i is cloud point i. Triangles are
+ *  counter-clockwise in (u,v); a point whose (u,v) coincides with another's is the vertex of
+ *  no triangle. DBS_ERR_INVALID_ARGUMENT when the cloud's size differs from the result's,
+ *  DBS_ERR_DEGENERATE when the (u,v) do not span the plane. */
+DBS_API int dbs_mesh_create(const dbs_result *result, const dbs_cloud *cloud, dbs_mesh **out);
+DBS_API void dbs_mesh_destroy(dbs_mesh *mesh);
+/** Number of vertices (the cloud's point count). */
+DBS_API int dbs_mesh_vertex_count(const dbs_mesh *mesh, size_t *out);
+/** Vertex positions (the cloud's points) into `out_xyz`, which holds `capacity` points. */
+DBS_API int dbs_mesh_vertices(const dbs_mesh *mesh, double *out_xyz, size_t capacity);
+/** Vertex parameters u0 v0 u1 v1 ... into `out_uv`, which holds `capacity` pairs. */
+DBS_API int dbs_mesh_uv(const dbs_mesh *mesh, double *out_uv, size_t capacity);
+DBS_API int dbs_mesh_triangle_count(const dbs_mesh *mesh, size_t *out);
+/** Vertex indices a0 b0 c0 a1 b1 c1 ... into `out`, which holds `capacity` triangles. */
+DBS_API int dbs_mesh_triangles(const dbs_mesh *mesh, int32_t *out, size_t capacity);
+DBS_API int dbs_mesh_suspicious_count(const dbs_mesh *mesh, size_t *out);
+/** Indices (ascending) of the suspicious triangles into `out`, which holds `capacity` values. */
+DBS_API int dbs_mesh_suspicious(const dbs_mesh *mesh, int32_t *out, size_t capacity);
+/** Writes the mesh by extension: .obj with vt = (u,v), plus STEM.mtl and the disk texture
+ *  STEM_texture.png beside it (so any viewer shows method (c)); or binary .ply with float
+ *  x y z u v per vertex. Other extensions are DBS_ERR_UNSUPPORTED. */
+DBS_API int dbs_mesh_save(const dbs_mesh *mesh, const char *path);
+
+typedef struct dbs_distortion dbs_distortion;
+
+/* How the (u,v) domain is scaled before triangles are compared (pinned). Both end with the
+ * total (u,v) area of the measured triangles equal to their total 3D area. */
+#define DBS_SCALING_UNIFORM 0  /* u and v alike: [0,1]^2's aspect ratio counts as distortion */
+#define DBS_SCALING_PER_AXIS 1 /* u and v first by the surface's typical (3D-area-weighted median) speed along each */
+
+/* Per-triangle measures (pinned). J maps the 3D triangle (in its plane) to its scaled (u,v)
+ * image; sigma1 >= sigma2 are its singular values. Degenerate triangles (zero area in 3D or
+ * in (u,v)) have NaN for measures 0-6 and are in no summary. */
+#define DBS_MEASURE_CONFORMAL 0       /* sigma1 / sigma2 >= 1; 1 = angles kept */
+#define DBS_MEASURE_AREA 1            /* sigma1 * sigma2; 1 = area kept */
+#define DBS_MEASURE_STRETCH_L2 2      /* Sander et al.'s L2 stretch sqrt((1/sigma1^2 + 1/sigma2^2) / 2) */
+#define DBS_MEASURE_STRETCH_LINF 3    /* largest stretch 1 / sigma2 */
+#define DBS_MEASURE_EDGE_DIFFERENCE 4 /* largest |edge length in (u,v) - in 3D| / length in 3D of the 3 edges */
+#define DBS_MEASURE_SIGMA1 5
+#define DBS_MEASURE_SIGMA2 6
+#define DBS_MEASURE_FOLDED 7     /* 1 when folded (orientation against the majority), else 0 */
+#define DBS_MEASURE_DEGENERATE 8 /* 1 when degenerate, else 0 */
+
+/* Summary statistics of a measure over the non-degenerate triangles (pinned). */
+#define DBS_SUMMARY_MIN 0
+#define DBS_SUMMARY_MEAN 1
+#define DBS_SUMMARY_P95 2 /* 95th percentile, interpolated between order statistics */
+#define DBS_SUMMARY_MAX 3
+
+/* Whole-mesh figures for dbs_distortion_stat (pinned). */
+#define DBS_DISTORTION_TRIANGLES 0       /* measured triangles */
+#define DBS_DISTORTION_DEGENERATE 1      /* degenerate triangles */
+#define DBS_DISTORTION_FOLDED 2          /* folded triangles */
+#define DBS_DISTORTION_SCALE_U 3         /* the scaling applied to u */
+#define DBS_DISTORTION_SCALE_V 4         /* the scaling applied to v */
+#define DBS_DISTORTION_MESH_STRETCH_L2 5 /* Sander's L2 stretch of the mesh (3D-area-weighted RMS); 1 = isometric */
+
+/** Distortion of the Delaunay mesh. A triangle is folded when the sign of det J times the
+ *  sign of its 3D normal against the base surface's normal differs from the majority's, so
+ *  a fold of the parameterization shows although every Delaunay triangle turns the same way in (u,v). */
+DBS_API int dbs_mesh_distortion(const dbs_mesh *mesh, int32_t scaling, dbs_distortion **out);
+/** Distortion of the caller's mesh over the parameterized cloud: `triangles` holds
+ *  3*n_triangles vertex indices into the cloud (NULL allowed when n_triangles is 0); folds
+ *  judged as in dbs_mesh_distortion, so a mesh of either orientation works. */
+DBS_API int dbs_distortion_create(const dbs_result *result, const dbs_cloud *cloud, const int32_t *triangles, size_t n_triangles, int32_t scaling, dbs_distortion **out);
+DBS_API void dbs_distortion_destroy(dbs_distortion *distortion);
+/** A whole-mesh figure (DBS_DISTORTION_*). */
+DBS_API int dbs_distortion_stat(const dbs_distortion *distortion, int32_t stat, double *out);
+/** A summary (DBS_SUMMARY_*) of a measure (DBS_MEASURE_CONFORMAL .. DBS_MEASURE_SIGMA2); 0 when no triangle counts. */
+DBS_API int dbs_distortion_summary(const dbs_distortion *distortion, int32_t measure, int32_t summary, double *out);
+/** One measure (DBS_MEASURE_*) per triangle, in triangle order, into `out`, which holds `capacity` values. */
+DBS_API int dbs_distortion_values(const dbs_distortion *distortion, int32_t measure, double *out, size_t capacity);
+
+typedef struct dbs_distances dbs_distances;
+
+/* Distance statistics (pinned ids) for dbs_distances_stat. */
+#define DBS_DISTANCES_COUNT 0
+#define DBS_DISTANCES_MEAN 1
+#define DBS_DISTANCES_RMS 2
+#define DBS_DISTANCES_MAX 3
+#define DBS_DISTANCES_P50 4 /* percentiles interpolated between order statistics */
+#define DBS_DISTANCES_P90 5
+#define DBS_DISTANCES_P95 6
+#define DBS_DISTANCES_P99 7
+#define DBS_DISTANCES_WITHIN 8    /* share of the points with distance <= tolerance, in [0,1] */
+#define DBS_DISTANCES_TOLERANCE 9 /* the tolerance used */
+
+/** Statistics of the point-to-surface distances of a result, overall and per patch.
+ *  `tolerance` >= 0 in cloud units; 0 = the result's accuracy target (DBS_STAT_ACCURACY). */
+DBS_API int dbs_distances_create(const dbs_result *result, double tolerance, dbs_distances **out);
+DBS_API void dbs_distances_destroy(dbs_distances *distances);
+/** A statistic (DBS_DISTANCES_*) over all points (patch = -1) or over the points a patch
+ *  parameterized (a patch id; 0 points and all statistics 0 for a patch that is no leaf). */
+DBS_API int dbs_distances_stat(const dbs_distances *distances, int32_t patch, int32_t stat, double *out);
+
+/** Writes a validation report into `dir` (created if missing): mesh.obj + mesh.mtl +
+ *  mesh_texture.png, mesh.ply, view.png (the mesh shaded and textured with the disks),
+ *  domain.png (the parameter domain: leaf rectangles, triangles coloured by conformal
+ *  distortion, suspicious and folded ones marked), distances.png (histogram) and
+ *  summary.json (options, timings, quadtree, patches, distances, mesh, distortion for both
+ *  scalings). `options` are those the result was made with (NULL: the defaults); the
+ *  distance tolerance is the result's accuracy target. */
+DBS_API int dbs_report_write(const dbs_result *result, const dbs_cloud *cloud, const dbs_options *options, const char *dir);
 
 #ifdef __cplusplus
 }

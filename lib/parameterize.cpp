@@ -169,12 +169,16 @@ class Driver {
     }
     // Every point belongs to some leaf's subcloud (A4 never drops one); should one be missed,
     // it still gets its nearest leaf rather than no parameters.
-    for (std::size_t i = 0; i < n; ++i) {
-      if (result_.patch[i] >= 0) continue;
-      for (int id : leaves) {
-        const Foot foot = SurfaceProjector(result_.patches[id].surface).project(points_[i]);
-        if (foot.distance < result_.distance[i]) assign(i, result_.patches[id], foot);
-      }
+    std::vector<std::size_t> missed;
+    for (std::size_t i = 0; i < n; ++i)
+      if (result_.patch[i] < 0) missed.push_back(i);
+    if (missed.empty()) return;
+    for (int id : leaves) {
+      const SurfaceProjector projector(result_.patches[id].surface);
+      parallel_for(missed.size(), threads_, [&](std::size_t k) {
+        const Foot foot = projector.project(points_[missed[k]]);
+        if (foot.distance < result_.distance[missed[k]]) assign(missed[k], result_.patches[id], foot);
+      });
     }
   }
 
