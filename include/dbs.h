@@ -253,7 +253,8 @@ DBS_API int dbs_patches_stats(const dbs_patches *patches, size_t i, size_t *out_
 typedef struct dbs_mesh dbs_mesh;
 
 /** A triangle is suspicious when one of its 3D edges is longer than this many times the
- *  local spacing of both its end points (a point's distance to its 6th nearest other point). */
+ *  local spacing of both its end points (a point's distance to its 6th nearest other point):
+ *  the mesh bridges across the surface, or along a ragged outline of the cloud. */
 #define DBS_MESH_SUSPICIOUS_FACTOR 4.0
 
 /** Triangulates the result's (u,v) in the plane (2D Delaunay, Qhull) and takes the triangles
