@@ -35,9 +35,13 @@ double stat_value(const dbs::Result& r, int32_t stat) {
     case DBS_STAT_ITERATIONS: return r.iterations;
     case DBS_STAT_SECONDS: return r.seconds;
     case DBS_STAT_LENGTH_SCALE: return r.length_scale;
+    case DBS_STAT_SECONDS_INDEX: return r.stage_seconds.index;
+    case DBS_STAT_SECONDS_EVOLVE: return r.stage_seconds.evolve;
+    case DBS_STAT_SECONDS_SUBDIVIDE: return r.stage_seconds.subdivide;
+    case DBS_STAT_SECONDS_PARAMETERIZE: return r.stage_seconds.parameterize;
     default: break;
   }
-  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_LENGTH_SCALE + 1) + ")");
+  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_SECONDS_PARAMETERIZE + 1) + ")");
 }
 
 }  // namespace

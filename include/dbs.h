@@ -215,6 +215,10 @@ DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, do
 #define DBS_STAT_ITERATIONS 8    /* grid evolutions over all patches */
 #define DBS_STAT_SECONDS 9       /* wall-clock time of dbs_parameterize */
 #define DBS_STAT_LENGTH_SCALE 10 /* the cloud's length scale h (mean nearest-neighbour spacing) */
+#define DBS_STAT_SECONDS_INDEX 11        /* wall-clock time spent indexing the cloud */
+#define DBS_STAT_SECONDS_EVOLVE 12       /* ... evolving base surfaces (all levels) */
+#define DBS_STAT_SECONDS_SUBDIVIDE 13    /* ... subdividing patches and splitting subclouds */
+#define DBS_STAT_SECONDS_PARAMETERIZE 14 /* ... projecting every point onto its leaves (A2) */
 DBS_API int dbs_result_stat(const dbs_result *result, int32_t stat, double *out);
 
 /** The result's quadtree: all patches, indexed by patch id; valid while `result` lives. */

@@ -27,6 +27,10 @@ constexpr double kLevelsEnd = 0.85;
 // points to carry a grid.
 constexpr std::size_t kMinPointsToSubdivide = 64;
 
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
 /// Progress fraction at the end of quadtree level `level` (levels are not known in advance,
 /// so each level gets half of what is left).
 double level_progress_end(int level) { return kIndexEnd + (kLevelsEnd - kIndexEnd) * (1.0 - std::pow(0.5, level + 1)); }
@@ -43,12 +47,13 @@ class Driver {
   }
 
   Result run() {
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     progress_.report(0.0, "index");
     {
       CloudIndex index(points_);
       result_.length_scale = cloud_spacing(index);
     }
+    result_.stage_seconds.index = seconds_since(start);
     if (!(result_.length_scale > 0.0)) fail(ErrorCode::Degenerate, "the cloud's points all coincide (length scale 0)");
     progress_.report(kIndexEnd, "index");
 
@@ -57,9 +62,11 @@ class Driver {
       level_ids = process_level(level, level_ids);
       result_.levels = level + 1;
     }
+    const auto parameterize_start = Clock::now();
     parameterize_points();
     summarize();
-    result_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result_.stage_seconds.parameterize = seconds_since(parameterize_start);
+    result_.seconds = seconds_since(start);
     progress_.finish();
     return std::move(result_);
   }
@@ -71,6 +78,7 @@ class Driver {
     const double begin = level == 0 ? kIndexEnd : level_progress_end(level - 1);
     const double end = level_progress_end(level);
     progress_.report(begin, "evolve");
+    const auto evolve_start = Clock::now();
 
     // One index per patch over its subcloud, shared by evolution and subdivision.
     std::vector<std::unique_ptr<CloudIndex>> indices(ids.size());
@@ -98,7 +106,9 @@ class Driver {
       evolve_patch(patch, points_, *projectors[k], settings, tick);
     });
     for (int id : ids) result_.iterations += result_.patches[id].iterations;
+    result_.stage_seconds.evolve += seconds_since(evolve_start);
     progress_.report(begin + 0.8 * (end - begin), "subdivide");
+    const auto subdivide_start = Clock::now();
 
     std::vector<int> split;
     for (std::size_t k = 0; k < ids.size(); ++k) {
@@ -118,6 +128,7 @@ class Driver {
     });
     indices.clear();
     projectors.clear();
+    result_.stage_seconds.subdivide += seconds_since(subdivide_start);
 
     std::vector<int> next;
     for (std::size_t s = 0; s < split.size(); ++s) {

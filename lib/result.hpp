@@ -22,6 +22,10 @@ struct Result {
   int iterations = 0;         // grid evolutions over all patches
   double length_scale = 0.0;  // h
   double seconds = 0.0;
+  /// Wall-clock time of each stage (their sum is about `seconds`).
+  struct StageSeconds {
+    double index = 0.0, evolve = 0.0, subdivide = 0.0, parameterize = 0.0;
+  } stage_seconds;
 
   std::size_t leaf_count() const;
   /// The leaf whose rectangle contains (u,v); on a seam the one with the larger u (then v)
