@@ -1,0 +1,198 @@
+// The libdbs benchmark: parameterizes height-field clouds z = 0.2 sin(pi x) sin(pi y) of
+// random points on the unit square, bounded by the square's sides, and prints one row per size:
+// points, wall time of dbs_parameterize, peak memory, iterations, levels, patches, mean distance.
+//
+// usage: dbs-bench [--sizes 10k,100k,1M] [--threads N] [--max-level N] [--relative-accuracy F]
+//
+// Peak memory is the rise of the process's peak resident set (VmHWM, reset per size through
+// /proc/self/clear_refs where the kernel allows it) over the resident set before the cloud is
+// handed to the library: it covers the library's copy of the cloud and the whole run.
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "dbs.h"
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// splitmix64: a fixed, portable sequence so every run benchmarks the same clouds.
+class Random {
+ public:
+  explicit Random(std::uint64_t seed) : state_(seed) {}
+  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+
+ private:
+  std::uint64_t next() {
+    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  }
+  std::uint64_t state_;
+};
+
+std::vector<double> height_field(std::size_t count, std::uint64_t seed) {
+  Random random(seed);
+  std::vector<double> xyz(3 * count);
+  for (std::size_t i = 0; i < count; ++i) {
+    double x = random.uniform(), y = random.uniform();
+    xyz[3 * i] = x;
+    xyz[3 * i + 1] = y;
+    xyz[3 * i + 2] = 0.2 * std::sin(kPi * x) * std::sin(kPi * y);
+  }
+  return xyz;
+}
+
+/// A "Vm...:  1234 kB" field of /proc/self/status in KiB, or -1 where there is none.
+long status_kib(const char* field) {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  std::size_t length = std::strlen(field);
+  while (std::getline(status, line)) {
+    if (line.compare(0, length, field) == 0 && line.size() > length && line[length] == ':') return std::atol(line.c_str() + length + 1);
+  }
+  return -1;
+}
+
+/// Makes VmHWM start again from the current resident set (Linux >= 4.0); false if refused.
+bool reset_peak_memory() {
+  std::ofstream clear_refs("/proc/self/clear_refs");
+  clear_refs << "5";
+  clear_refs.flush();
+  return static_cast<bool>(clear_refs);
+}
+
+[[noreturn]] void fail(const char* what, int status) {
+  std::fprintf(stderr, "dbs-bench: %s failed: %s (%s)\n", what, dbs_last_error_message(), dbs_status_string(status));
+  std::exit(EXIT_FAILURE);
+}
+
+void check(int status, const char* what) {
+  if (status != DBS_OK) fail(what, status);
+}
+
+[[noreturn]] void usage_error(const std::string& message) {
+  std::fprintf(stderr, "dbs-bench: %s\nusage: dbs-bench [--sizes 10k,100k,1M] [--threads N] [--max-level N] [--relative-accuracy F]\n", message.c_str());
+  std::exit(2);
+}
+
+/// "10000", "10k" or "1M" as a point count.
+std::size_t parse_size(const std::string& text) {
+  char* end = nullptr;
+  double value = std::strtod(text.c_str(), &end);
+  std::string suffix(end);
+  if (suffix == "k" || suffix == "K") value *= 1e3;
+  else if (suffix == "m" || suffix == "M") value *= 1e6;
+  else if (!suffix.empty()) usage_error("'" + text + "' is not a size (e.g. 50000, 10k, 1M)");
+  if (end == text.c_str() || !(value >= 1.0 && value <= 1e9) || value != std::floor(value)) usage_error("'" + text + "' is not a size between 1 and 1e9 points");
+  return static_cast<std::size_t>(value);
+}
+
+int parse_int(const std::string& option, const std::string& text) {
+  char* end = nullptr;
+  long value = std::strtol(text.c_str(), &end, 10);
+  if (end == text.c_str() || *end != '\0' || value < 0 || value > 1000) usage_error(option + ": '" + text + "' is not a small non-negative integer");
+  return static_cast<int>(value);
+}
+
+struct Settings {
+  std::vector<std::size_t> sizes{10000, 100000, 1000000};
+  int threads = 0;
+  int max_level = -1;               // -1: the library's default
+  double relative_accuracy = -1.0;  // < 0: the library's default
+};
+
+Settings parse_arguments(int argc, char** argv) {
+  Settings settings;
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") usage_error("benchmark of dbs_parameterize on height-field clouds");
+    if (i + 1 >= argc) usage_error(arg + (arg.rfind("--", 0) == 0 ? " needs a value" : ": unknown argument"));
+    std::string value = argv[++i];
+    if (arg == "--sizes") {
+      settings.sizes.clear();
+      std::stringstream list(value);
+      std::string item;
+      while (std::getline(list, item, ',')) settings.sizes.push_back(parse_size(item));
+      if (settings.sizes.empty()) usage_error("--sizes needs at least one size");
+    } else if (arg == "--threads") {
+      settings.threads = parse_int(arg, value);
+    } else if (arg == "--max-level") {
+      settings.max_level = parse_int(arg, value);
+    } else if (arg == "--relative-accuracy") {
+      char* end = nullptr;
+      settings.relative_accuracy = std::strtod(value.c_str(), &end);
+      if (end == value.c_str() || *end != '\0' || !(settings.relative_accuracy > 0.0)) usage_error(arg + ": '" + value + "' is not a positive number");
+    } else {
+      usage_error("unknown option '" + arg + "'");
+    }
+  }
+  return settings;
+}
+
+double stat(const dbs_result* result, int32_t id) {
+  double value = 0.0;
+  check(dbs_result_stat(result, id, &value), "dbs_result_stat");
+  return value;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Settings settings = parse_arguments(argc, argv);
+  static const double bottom[] = {0, 0, 0, 1, 0, 0}, right[] = {1, 0, 0, 1, 1, 0};
+  static const double top[] = {0, 1, 0, 1, 1, 0}, left[] = {0, 0, 0, 0, 1, 0};
+
+  dbs_options* options = nullptr;
+  check(dbs_options_create(&options), "dbs_options_create");
+  check(dbs_options_set_int(options, DBS_OPT_THREADS, settings.threads), "dbs_options_set_int(threads)");
+  if (settings.max_level >= 0) check(dbs_options_set_int(options, DBS_OPT_MAX_LEVEL, settings.max_level), "dbs_options_set_int(max_level)");
+  if (settings.relative_accuracy > 0.0) check(dbs_options_set_double(options, DBS_OPT_RELATIVE_ACCURACY, settings.relative_accuracy), "dbs_options_set_double(relative_accuracy)");
+  int32_t max_level = 0;
+  double relative_accuracy = 0.0;
+  dbs_options_get_int(options, DBS_OPT_MAX_LEVEL, &max_level);
+  dbs_options_get_double(options, DBS_OPT_RELATIVE_ACCURACY, &relative_accuracy);
+  dbs_boundary* boundary = nullptr;
+  check(dbs_boundary_create(bottom, 2, right, 2, top, 2, left, 2, &boundary), "dbs_boundary_create");
+
+  std::printf("libdbs %s, z = 0.2 sin(pi x) sin(pi y) on the unit square, max level %d, relative accuracy %g, threads %s\n\n",
+              dbs_version_string(), max_level, relative_accuracy, settings.threads == 0 ? "all" : std::to_string(settings.threads).c_str());
+  std::printf("| points | time (s) | peak memory (MiB) | iterations | levels | patches | mean distance | target met |\n");
+  std::printf("|-------:|---------:|------------------:|-----------:|-------:|--------:|--------------:|:----------:|\n");
+  std::fflush(stdout);
+
+  for (std::size_t count : settings.sizes) {
+    std::vector<double> xyz = height_field(count, 20240601 + count);
+    bool peak_was_reset = reset_peak_memory();
+    long rss_before = status_kib(peak_was_reset ? "VmRSS" : "VmHWM");
+
+    dbs_cloud* cloud = nullptr;
+    dbs_result* result = nullptr;
+    check(dbs_cloud_create(xyz.data(), count, &cloud), "dbs_cloud_create");
+    auto start = std::chrono::steady_clock::now();
+    check(dbs_parameterize(cloud, boundary, options, &result), "dbs_parameterize");
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    long peak = status_kib("VmHWM");
+
+    char memory[32] = "n/a";
+    if (rss_before >= 0 && peak >= 0) std::snprintf(memory, sizeof memory, "%.1f", static_cast<double>(peak - rss_before) / 1024.0);
+    std::printf("| %zu | %.2f | %s | %.0f | %.0f | %.0f | %.3g | %s |\n", count, seconds, memory,
+                stat(result, DBS_STAT_ITERATIONS), stat(result, DBS_STAT_LEVELS), stat(result, DBS_STAT_PATCHES),
+                stat(result, DBS_STAT_MEAN_DISTANCE), stat(result, DBS_STAT_ACCURACY_MET) != 0.0 ? "yes" : "no");
+    std::fflush(stdout);
+    dbs_result_destroy(result);
+    dbs_cloud_destroy(cloud);
+  }
+  dbs_boundary_destroy(boundary);
+  dbs_options_destroy(options);
+  return EXIT_SUCCESS;
+}

@@ -1,0 +1,87 @@
+"""libdbs from Python: load a cloud and its boundary, parameterize, inspect the result.
+
+usage: DBS_LIBRARY=path/to/libdbs.so python3 example.py CLOUD BOUNDARY [RESULT]
+"""
+import sys
+
+import dbs
+
+
+def main(argv):
+    if len(argv) not in (3, 4):
+        print(__doc__.strip().splitlines()[-1], file=sys.stderr)
+        return 2
+    cloud_path, boundary_path = argv[1], argv[2]
+    print(f"libdbs {dbs.version()}")
+
+    cloud = dbs.Cloud.load(cloud_path)
+    boundary = dbs.Boundary.load(boundary_path)
+    low, high = cloud.bounds()
+    print(f"{len(cloud)} points in [{low[0]:.4g}, {high[0]:.4g}] x [{low[1]:.4g}, {high[1]:.4g}] x [{low[2]:.4g}, {high[2]:.4g}]")
+
+    options = dbs.Options().set(dbs.OPT_MAX_LEVEL, 3).set(dbs.OPT_RELATIVE_ACCURACY, 1e-3)
+    # A value out of range raises DbsError with the library's message and status.
+    try:
+        options.set(dbs.OPT_MAX_LEVEL, 99)
+        raise SystemExit("max level 99 was not refused")
+    except dbs.DbsError as error:
+        assert error.status == dbs.ERR_OUT_OF_RANGE, error.status
+        print(f"refused as expected: {error}")
+
+    fractions = []
+    options.on_progress(lambda fraction, stage: fractions.append(fraction))
+    levels = []
+    options.on_level(lambda level, patches: levels.append((level, len(patches))))
+
+    result = dbs.parameterize(cloud, boundary, options)
+    if fractions[-1] != 1.0 or fractions != sorted(fractions):
+        raise SystemExit(f"progress did not rise to exactly 1.0: {fractions[-3:]}")
+    uv = result.uv()
+    if any(not (0.0 <= c <= 1.0) for pair in uv for c in pair):
+        raise SystemExit("a parameter lies outside [0, 1]")
+
+    print(f"mean distance {result.stat(dbs.STAT_MEAN_DISTANCE):.4g}, max {result.stat(dbs.STAT_MAX_DISTANCE):.4g}, "
+          f"target {result.stat(dbs.STAT_ACCURACY):.4g} ({'met' if result.stat(dbs.STAT_ACCURACY_MET) else 'not met'})")
+    print(f"{int(result.stat(dbs.STAT_PATCHES))} patches ({int(result.stat(dbs.STAT_LEAVES))} leaves) on "
+          f"{int(result.stat(dbs.STAT_LEVELS))} levels; per level: {levels}")
+    points = cloud.points()
+    for i in range(0, len(points), max(1, len(points) // 5)):
+        x, y, z = points[i]
+        print(f"  point {i:6d} ({x:9.4f} {y:9.4f} {z:9.4f}) -> u {uv[i][0]:.4f} v {uv[i][1]:.4f}")
+
+    patches = result.patches()
+    for i in range(min(len(patches), 5)):
+        info = patches.info(i)
+        print(f"  patch {info['id']}: level {info['level']} rect {tuple(round(c, 4) for c in info['rect'])} "
+              f"grid {info['grid'][0]}x{info['grid'][1]} points {info['points']} mean {info['mean_distance']:.3g}")
+    point, normal = result.evaluate(0.5, 0.5)
+    print(f"S(0.5, 0.5) = {tuple(round(c, 5) for c in point)}, normal {tuple(round(c, 5) for c in normal)}")
+
+    # Validation: a Delaunay mesh of the (u,v) over the cloud, its distortion, the distances.
+    mesh = dbs.Mesh.create(result, cloud)
+    triangles = mesh.triangles()
+    distortion = mesh.distortion(dbs.SCALING_PER_AXIS)
+    distances = dbs.Distances.create(result)
+    print(f"mesh: {len(triangles)} triangles, {len(mesh.suspicious())} suspicious, "
+          f"{int(distortion.stat(dbs.DISTORTION_FOLDED))} folded, conformal distortion mean "
+          f"{distortion.summary(dbs.MEASURE_CONFORMAL, dbs.SUMMARY_MEAN):.3f} p95 "
+          f"{distortion.summary(dbs.MEASURE_CONFORMAL, dbs.SUMMARY_P95):.3f}")
+    print(f"distances: p50 {distances.stat(dbs.DISTANCES_P50):.4g}, p95 {distances.stat(dbs.DISTANCES_P95):.4g}, "
+          f"{distances.stat(dbs.DISTANCES_WITHIN):.1%} within the target")
+    if len(distortion.values(dbs.MEASURE_AREA)) != len(triangles):
+        raise SystemExit("one distortion value per triangle was expected")
+
+    try:
+        dbs.Cloud.load(cloud_path + ".missing.xyz")
+        raise SystemExit("a missing file was accepted")
+    except dbs.DbsError as error:
+        print(f"missing file refused as expected: {error}")
+
+    if len(argv) == 4:
+        result.save(cloud, argv[3])
+        print(f"wrote {argv[3]}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# Proves that an installed libdbs can be used by an outside project, shared and static:
+#   1. a shared build installed into a temporary prefix;
+#   2. tests/consumer built with find_package(dbs) + dbs::dbs, and consumer.c built with
+#      `pkg-config --cflags --libs dbs`; both run;
+#   3. only dbs_* symbols are exported by the installed libdbs.so;
+#   4. the same with a static build (-DDBS_BUILD_SHARED=OFF), pkg-config --static.
+# Build trees go to build-consumer/ (reused by later runs); the prefixes are removed at exit.
+#
+# usage: scripts/consumer_check.sh
+set -euo pipefail
+
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+work="$repo/build-consumer"
+prefixes="$(mktemp -d)"
+trap 'rm -rf "$prefixes"' EXIT
+jobs="$(nproc)"
+launcher=()
+if command -v ccache >/dev/null 2>&1; then
+  launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+
+# install_libdbs NAME CMAKE_OPTIONS...: builds libdbs alone and installs it into $prefixes/NAME.
+install_libdbs() {
+  local name="$1"
+  shift
+  local prefix="$prefixes/$name"
+  echo "consumer_check: building and installing a $name libdbs into $prefix"
+  cmake -S "$repo" -B "$work/libdbs-$name" -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$prefix" \
+    -DDBS_BUILD_TESTS=OFF -DDBS_BUILD_EXAMPLES=OFF -DDBS_BUILD_BENCH=OFF "${launcher[@]}" "$@" >/dev/null
+  cmake --build "$work/libdbs-$name" -j"$jobs" >/dev/null
+  cmake --install "$work/libdbs-$name" >/dev/null
+}
+
+# consume NAME [--static]: builds and runs both consumers against $prefixes/NAME.
+consume() {
+  local name="$1" static="${2:-}"
+  local prefix="$prefixes/$name"
+  local pc_dir
+  pc_dir="$(dirname "$(find "$prefix" -name dbs.pc -print -quit)")"
+
+  echo "consumer_check: [$name] find_package(dbs) + dbs::dbs"
+  rm -rf "$work/cmake-$name"
+  cmake -S "$repo/tests/consumer" -B "$work/cmake-$name" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$work/cmake-$name" >/dev/null
+  "$work/cmake-$name/consumer"
+
+  echo "consumer_check: [$name] cc consumer.c \$(pkg-config $static --cflags --libs dbs)"
+  local flags libdir
+  flags="$(PKG_CONFIG_PATH="$pc_dir" pkg-config $static --cflags --libs dbs)"
+  libdir="$(PKG_CONFIG_PATH="$pc_dir" pkg-config --variable=libdir dbs)"
+  echo "  pkg-config: $flags"
+  # shellcheck disable=SC2086  # the flags are meant to split into words
+  cc "$repo/tests/consumer/consumer.c" $flags -lm -Wl,-rpath,"$libdir" -o "$work/pkgconfig-$name"
+  "$work/pkgconfig-$name"
+}
+
+mkdir -p "$work"
+
+install_libdbs shared -DDBS_BUILD_SHARED=ON
+consume shared
+
+echo "consumer_check: [shared] exported symbols"
+library="$(find "$prefixes/shared" -name 'libdbs.so.*' -type f -print -quit)"
+foreign="$(nm -D --defined-only "$library" | awk '{print $NF}' | grep -v '^dbs_' | grep -v '^DBS_' || true)"
+if [ -n "$foreign" ]; then
+  echo "consumer_check: $library exports symbols other than dbs_*:" >&2
+  echo "$foreign" | head -20 >&2
+  exit 1
+fi
+echo "  $(nm -D --defined-only "$library" | grep -c ' dbs_') dbs_* functions, nothing else"
+
+install_libdbs static -DDBS_BUILD_SHARED=OFF
+consume static --static
+
+echo "consumer_check: all consumers built and ran"

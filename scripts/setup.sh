@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs the Debian packages libdbs needs (only when some are missing) and builds libdbs,
+# dbs-param, the examples and the tests into build/ (Release).
+#
+# usage: scripts/setup.sh            (from anywhere; safe to run again)
+set -euo pipefail
+
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="$repo/build"
+
+packages=(
+  build-essential cmake pkg-config ccache gfortran python3 binutils
+  libeigen3-dev libnanoflann-dev libceres-dev libdraco-dev
+  libcmocka-dev libqhull-dev libpng-dev
+)
+
+if dpkg -s "${packages[@]}" >/dev/null 2>&1; then
+  echo "setup: all ${#packages[@]} Debian packages are installed"
+else
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+  echo "setup: installing ${packages[*]}"
+  $sudo env DEBIAN_FRONTEND=noninteractive apt-get update
+  $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${packages[@]}"
+fi
+
+launcher=()
+if command -v ccache >/dev/null 2>&1; then
+  launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}"
+cmake --build "$build" -j"$(nproc)"
+echo "setup: built into $build"
