@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Proves that an installed libdbs can be used by an outside project, shared and static:
-#   1. a shared build installed into a temporary prefix;
+#   1. a shared build installed into a temporary prefix, then moved elsewhere (the installed
+#      dbs.pc and CMake package must find the moved tree);
 #   2. tests/consumer built with find_package(dbs) + dbs::dbs, and consumer.c built with
 #      `pkg-config --cflags --libs dbs`; both run;
 #   3. only dbs_* symbols are exported by the installed libdbs.so;
@@ -20,16 +21,18 @@ if command -v ccache >/dev/null 2>&1; then
   launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
 
-# install_libdbs NAME CMAKE_OPTIONS...: builds libdbs alone and installs it into $prefixes/NAME.
+# install_libdbs NAME CMAKE_OPTIONS...: builds libdbs alone, installs it into $prefixes/NAME-installed
+# and moves that tree to $prefixes/NAME.
 install_libdbs() {
   local name="$1"
   shift
   local prefix="$prefixes/$name"
   echo "consumer_check: building and installing a $name libdbs into $prefix"
-  cmake -S "$repo" -B "$work/libdbs-$name" -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$prefix" \
+  cmake -S "$repo" -B "$work/libdbs-$name" -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$prefix-installed" \
     -DDBS_BUILD_TESTS=OFF -DDBS_BUILD_EXAMPLES=OFF -DDBS_BUILD_BENCH=OFF "${launcher[@]}" "$@" >/dev/null
   cmake --build "$work/libdbs-$name" -j"$jobs" >/dev/null
   cmake --install "$work/libdbs-$name" >/dev/null
+  mv "$prefix-installed" "$prefix"
 }
 
 # consume NAME [--static]: builds and runs both consumers against $prefixes/NAME.
