@@ -1,8 +1,14 @@
-// The libdbs benchmark: parameterizes height-field clouds z = 0.2 sin(pi x) sin(pi y) of
-// random points on the unit square, bounded by the square's sides, and prints one row per size:
-// points, wall time of dbs_parameterize, peak memory, iterations, levels, patches, mean distance.
+// The libdbs benchmark: parameterizes height-field clouds of random points on the unit square,
+// bounded by the square's sides, and prints a table per surface with one row per size: points,
+// wall time of dbs_parameterize and of each of its stages, peak memory, iterations, levels,
+// patches, leaves, mean distance.
 //
-// usage: dbs-bench [--sizes 10k,100k,1M] [--threads N] [--max-level N] [--relative-accuracy F]
+// Two surfaces: "smooth", z = 0.2 sin(pi x) sin(pi y), which one base surface fits, and
+// "rippled", the same plus 0.01 sin(16 pi x) sin(16 pi y), whose ripples are finer than the largest
+// grid of one patch can follow, so the recursive method has to subdivide.
+//
+// usage: dbs-bench [--surface smooth|rippled|both] [--sizes 10k,100k,1M] [--threads N]
+//                  [--max-level N] [--relative-accuracy F]
 //
 // Peak memory is the rise of the process's peak resident set (VmHWM, reset per size through
 // /proc/self/clear_refs where the kernel allows it) over the resident set before the cloud is
@@ -40,14 +46,25 @@ class Random {
   std::uint64_t state_;
 };
 
-std::vector<double> height_field(std::size_t count, std::uint64_t seed) {
+struct Surface {
+  const char* name;
+  const char* formula;
+  double ripple;  // amplitude of the 0.01-scale ripples; 0 = smooth
+};
+
+constexpr Surface kSurfaces[] = {
+    {"smooth", "z = 0.2 sin(pi x) sin(pi y)", 0.0},
+    {"rippled", "z = 0.2 sin(pi x) sin(pi y) + 0.01 sin(16 pi x) sin(16 pi y)", 0.01},
+};
+
+std::vector<double> height_field(const Surface& surface, std::size_t count, std::uint64_t seed) {
   Random random(seed);
   std::vector<double> xyz(3 * count);
   for (std::size_t i = 0; i < count; ++i) {
     double x = random.uniform(), y = random.uniform();
     xyz[3 * i] = x;
     xyz[3 * i + 1] = y;
-    xyz[3 * i + 2] = 0.2 * std::sin(kPi * x) * std::sin(kPi * y);
+    xyz[3 * i + 2] = 0.2 * std::sin(kPi * x) * std::sin(kPi * y) + surface.ripple * std::sin(16 * kPi * x) * std::sin(16 * kPi * y);
   }
   return xyz;
 }
@@ -81,7 +98,7 @@ void check(int status, const char* what) {
 }
 
 [[noreturn]] void usage_error(const std::string& message) {
-  std::fprintf(stderr, "dbs-bench: %s\nusage: dbs-bench [--sizes 10k,100k,1M] [--threads N] [--max-level N] [--relative-accuracy F]\n", message.c_str());
+  std::fprintf(stderr, "dbs-bench: %s\nusage: dbs-bench [--surface smooth|rippled|both] [--sizes 10k,100k,1M] [--threads N] [--max-level N] [--relative-accuracy F]\n", message.c_str());
   std::exit(2);
 }
 
@@ -105,6 +122,7 @@ int parse_int(const std::string& option, const std::string& text) {
 }
 
 struct Settings {
+  std::vector<const Surface*> surfaces{&kSurfaces[0], &kSurfaces[1]};
   std::vector<std::size_t> sizes{10000, 100000, 1000000};
   int threads = 0;
   int max_level = -1;               // -1: the library's default
@@ -118,7 +136,13 @@ Settings parse_arguments(int argc, char** argv) {
     if (arg == "-h" || arg == "--help") usage_error("benchmark of dbs_parameterize on height-field clouds");
     if (i + 1 >= argc) usage_error(arg + (arg.rfind("--", 0) == 0 ? " needs a value" : ": unknown argument"));
     std::string value = argv[++i];
-    if (arg == "--sizes") {
+    if (arg == "--surface") {
+      settings.surfaces.clear();
+      for (const Surface& surface : kSurfaces) {
+        if (value == surface.name || value == "both") settings.surfaces.push_back(&surface);
+      }
+      if (settings.surfaces.empty()) usage_error("--surface: '" + value + "' is not smooth, rippled or both");
+    } else if (arg == "--sizes") {
       settings.sizes.clear();
       std::stringstream list(value);
       std::string item;
@@ -164,33 +188,39 @@ int main(int argc, char** argv) {
   dbs_boundary* boundary = nullptr;
   check(dbs_boundary_create(bottom, 2, right, 2, top, 2, left, 2, &boundary), "dbs_boundary_create");
 
-  std::printf("libdbs %s, z = 0.2 sin(pi x) sin(pi y) on the unit square, max level %d, relative accuracy %g, threads %s\n\n",
-              dbs_version_string(), max_level, relative_accuracy, settings.threads == 0 ? "all" : std::to_string(settings.threads).c_str());
-  std::printf("| points | time (s) | peak memory (MiB) | iterations | levels | patches | mean distance | target met |\n");
-  std::printf("|-------:|---------:|------------------:|-----------:|-------:|--------:|--------------:|:----------:|\n");
-  std::fflush(stdout);
-
-  for (std::size_t count : settings.sizes) {
-    std::vector<double> xyz = height_field(count, 20240601 + count);
-    bool peak_was_reset = reset_peak_memory();
-    long rss_before = status_kib(peak_was_reset ? "VmRSS" : "VmHWM");
-
-    dbs_cloud* cloud = nullptr;
-    dbs_result* result = nullptr;
-    check(dbs_cloud_create(xyz.data(), count, &cloud), "dbs_cloud_create");
-    auto start = std::chrono::steady_clock::now();
-    check(dbs_parameterize(cloud, boundary, options, &result), "dbs_parameterize");
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    long peak = status_kib("VmHWM");
-
-    char memory[32] = "n/a";
-    if (rss_before >= 0 && peak >= 0) std::snprintf(memory, sizeof memory, "%.1f", static_cast<double>(peak - rss_before) / 1024.0);
-    std::printf("| %zu | %.2f | %s | %.0f | %.0f | %.0f | %.3g | %s |\n", count, seconds, memory,
-                stat(result, DBS_STAT_ITERATIONS), stat(result, DBS_STAT_LEVELS), stat(result, DBS_STAT_PATCHES),
-                stat(result, DBS_STAT_MEAN_DISTANCE), stat(result, DBS_STAT_ACCURACY_MET) != 0.0 ? "yes" : "no");
+  std::printf("libdbs %s, max level %d, relative accuracy %g, threads %s\n", dbs_version_string(), max_level, relative_accuracy,
+              settings.threads == 0 ? "all" : std::to_string(settings.threads).c_str());
+  std::printf("times in seconds: the whole dbs_parameterize call, then its stages (index: k-d tree and length scale;\n"
+              "evolve: base surfaces on all levels; subdivide: middle curves and subclouds; project: every point onto its leaves)\n");
+  for (const Surface* surface : settings.surfaces) {
+    std::printf("\n%s: %s\n\n", surface->name, surface->formula);
+    std::printf("| points | time | index | evolve | subdivide | project | peak memory (MiB) | iterations | levels | patches | leaves | mean distance | target met |\n");
+    std::printf("|-------:|-----:|------:|-------:|----------:|--------:|------------------:|-----------:|-------:|--------:|-------:|--------------:|:----------:|\n");
     std::fflush(stdout);
-    dbs_result_destroy(result);
-    dbs_cloud_destroy(cloud);
+    for (std::size_t count : settings.sizes) {
+      std::vector<double> xyz = height_field(*surface, count, 20240601 + count);
+      bool peak_was_reset = reset_peak_memory();
+      long rss_before = status_kib(peak_was_reset ? "VmRSS" : "VmHWM");
+
+      dbs_cloud* cloud = nullptr;
+      dbs_result* result = nullptr;
+      check(dbs_cloud_create(xyz.data(), count, &cloud), "dbs_cloud_create");
+      auto start = std::chrono::steady_clock::now();
+      check(dbs_parameterize(cloud, boundary, options, &result), "dbs_parameterize");
+      double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      long peak = status_kib("VmHWM");
+
+      char memory[32] = "n/a";
+      if (rss_before >= 0 && peak >= 0) std::snprintf(memory, sizeof memory, "%.1f", static_cast<double>(peak - rss_before) / 1024.0);
+      std::printf("| %zu | %.2f | %.2f | %.2f | %.2f | %.2f | %s | %.0f | %.0f | %.0f | %.0f | %.3g | %s |\n", count, seconds,
+                  stat(result, DBS_STAT_SECONDS_INDEX), stat(result, DBS_STAT_SECONDS_EVOLVE), stat(result, DBS_STAT_SECONDS_SUBDIVIDE),
+                  stat(result, DBS_STAT_SECONDS_PARAMETERIZE), memory, stat(result, DBS_STAT_ITERATIONS), stat(result, DBS_STAT_LEVELS),
+                  stat(result, DBS_STAT_PATCHES), stat(result, DBS_STAT_LEAVES), stat(result, DBS_STAT_MEAN_DISTANCE),
+                  stat(result, DBS_STAT_ACCURACY_MET) != 0.0 ? "yes" : "no");
+      std::fflush(stdout);
+      dbs_result_destroy(result);
+      dbs_cloud_destroy(cloud);
+    }
   }
   dbs_boundary_destroy(boundary);
   dbs_options_destroy(options);
