@@ -1,5 +1,6 @@
 /* Progress and level callbacks: what they receive, on which thread, and cancellation. */
 #define _POSIX_C_SOURCE 200809L /* pthread_self */
+#include <math.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -159,6 +160,25 @@ struct level_log {
   pthread_t caller;
 };
 
+/* The view's grid and boundary of patch i: finite, and the grid's first and last points are
+ * the boundary's corners (the grid interpolates the boundary). */
+static int grid_and_boundary_agree(const dbs_patches *patches, size_t i, int32_t nu, int32_t nv) {
+  const size_t n = (size_t)nu * (size_t)nv;
+  double *grid = malloc(sizeof(double) * 3 * n);
+  if (!grid) return 0;
+  int ok = dbs_patches_grid_points(patches, i, grid, n) == DBS_OK;
+  for (size_t k = 0; ok && k < 3 * n; ++k) ok = isfinite(grid[k]);
+  size_t bottom = 0, top = 0;
+  ok = ok && dbs_patches_boundary_count(patches, i, DBS_SIDE_BOTTOM, &bottom) == DBS_OK && dbs_patches_boundary_count(patches, i, DBS_SIDE_TOP, &top) == DBS_OK && bottom >= 2 && top >= 2;
+  double *first = ok ? malloc(sizeof(double) * 3 * bottom) : NULL, *last = ok ? malloc(sizeof(double) * 3 * top) : NULL;
+  ok = ok && first && last && dbs_patches_boundary_points(patches, i, DBS_SIDE_BOTTOM, first, bottom) == DBS_OK && dbs_patches_boundary_points(patches, i, DBS_SIDE_TOP, last, top) == DBS_OK;
+  for (int c = 0; ok && c < 3; ++c) ok = fabs(grid[c] - first[c]) < 1e-12 && fabs(grid[3 * (n - 1) + c] - last[3 * (top - 1) + c]) < 1e-12;
+  free(grid);
+  free(first);
+  free(last);
+  return ok;
+}
+
 static int record_level(int32_t level, const dbs_patches *patches, void *payload) {
   struct level_log *log = payload;
   if (!pthread_equal(pthread_self(), log->caller)) log->wrong_thread = 1;
@@ -178,6 +198,7 @@ static int record_level(int32_t level, const dbs_patches *patches, void *payload
     /* a level-L patch covers 1/2^L of [0,1] along each direction */
     double side = 1.0 / (double)(1 << level);
     if (!ok || patch_level != level || rect[2] - rect[0] != side || rect[3] - rect[1] != side || nu < 5 || nv < 5 || max < mean) log->consistent = 0;
+    if (ok && !grid_and_boundary_agree(patches, i, nu, nv)) log->consistent = 0;
     if (log->calls < MAX_LEVELS) log->points[log->calls] += points;
   }
   int32_t beyond = 0;

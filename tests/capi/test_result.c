@@ -239,6 +239,118 @@ static void the_root_patch(void **state) {
   assert_true(iterations == result_stat(f->result, DBS_STAT_ITERATIONS));
 }
 
+/* A subdivided result through the C API: the quadtree's links, rectangles and shared sides,
+ * and every point's leaf and level. */
+static void the_quadtree_of_a_subdivided_result(void **state) {
+  (void)state;
+  dbs_cloud *cloud = bump_cloud(40, 0.2);
+  dbs_boundary *boundary = square_boundary(3);
+  dbs_options *options = NULL;
+  assert_ok(dbs_options_create(&options));
+  assert_ok(dbs_options_set_double(options, DBS_OPT_ACCURACY, 1e-6)); /* out of reach: every patch splits */
+  assert_ok(dbs_options_set_int(options, DBS_OPT_MAX_LEVEL, 2));
+  assert_ok(dbs_options_set_int(options, DBS_OPT_MAX_GRID, 6));
+  dbs_result *result = parameterize_or_fail(cloud, boundary, options);
+  assert_true(result_stat(result, DBS_STAT_LEVELS) == 3.0);
+
+  const dbs_patches *all = NULL;
+  assert_ok(dbs_result_patches(result, &all));
+  size_t count = 0;
+  assert_ok(dbs_patches_count(all, &count));
+  assert_true(count == result_stat(result, DBS_STAT_PATCHES));
+  assert_int_equal(count, 1 + 4 + 16);
+  int32_t level[21], parent[21], leaf[21], children[21] = {0};
+  double rect[21][4], leaf_area = 0;
+  for (size_t i = 0; i < count; ++i) {
+    int32_t id = -1;
+    assert_ok(dbs_patches_id(all, i, &id));
+    assert_int_equal(id, (int32_t)i);
+    assert_ok(dbs_patches_level(all, i, &level[i]));
+    assert_ok(dbs_patches_parent(all, i, &parent[i]));
+    assert_ok(dbs_patches_is_leaf(all, i, &leaf[i]));
+    assert_ok(dbs_patches_rect(all, i, rect[i]));
+    assert_int_equal(leaf[i], level[i] == 2);
+    if (leaf[i]) leaf_area += (rect[i][2] - rect[i][0]) * (rect[i][3] - rect[i][1]);
+    if (i == 0) {
+      assert_int_equal(parent[i], -1);
+      continue;
+    }
+    /* a child is one quarter of its parent, one level below */
+    const int32_t p = parent[i];
+    assert_true(p >= 0 && p < (int32_t)i);
+    ++children[p];
+    assert_int_equal(level[i], level[p] + 1);
+    const double half_u = 0.5 * (rect[p][2] - rect[p][0]), half_v = 0.5 * (rect[p][3] - rect[p][1]);
+    assert_true(rect[i][2] - rect[i][0] == half_u && rect[i][3] - rect[i][1] == half_v);
+    assert_true(rect[i][0] == rect[p][0] || rect[i][0] == rect[p][0] + half_u);
+    assert_true(rect[i][1] == rect[p][1] || rect[i][1] == rect[p][1] + half_v);
+  }
+  for (size_t i = 0; i < count; ++i) assert_int_equal(children[i], leaf[i] ? 0 : 4);
+  assert_true(leaf_area == 1.0);
+
+  /* Side by side children share their common side point for point (the projected middle
+   * curve), and a patch's grid starts at its boundary's first corner. */
+  size_t pairs = 0;
+  for (size_t a = 1; a < count; ++a) {
+    for (size_t b = 1; b < count; ++b) {
+      if (parent[a] != parent[b] || rect[a][2] != rect[b][0] || rect[a][1] != rect[b][1]) continue;
+      ++pairs;
+      size_t na = 0, nb = 0;
+      assert_ok(dbs_patches_boundary_count(all, a, DBS_SIDE_RIGHT, &na));
+      assert_ok(dbs_patches_boundary_count(all, b, DBS_SIDE_LEFT, &nb));
+      assert_int_equal(na, nb);
+      double *right = malloc(sizeof(double) * 3 * na), *left = malloc(sizeof(double) * 3 * nb);
+      assert_non_null(right);
+      assert_non_null(left);
+      assert_ok(dbs_patches_boundary_points(all, a, DBS_SIDE_RIGHT, right, na));
+      assert_ok(dbs_patches_boundary_points(all, b, DBS_SIDE_LEFT, left, nb));
+      assert_memory_equal(right, left, sizeof(double) * 3 * na);
+      free(right);
+      free(left);
+    }
+    int32_t nu = 0, nv = 0;
+    assert_ok(dbs_patches_grid_size(all, a, &nu, &nv));
+    double *grid = malloc(sizeof(double) * 3 * (size_t)nu * (size_t)nv), corner[3 * 64];
+    assert_non_null(grid);
+    size_t n = 0;
+    assert_ok(dbs_patches_boundary_count(all, a, DBS_SIDE_BOTTOM, &n));
+    assert_true(n >= 2 && n <= 64);
+    assert_ok(dbs_patches_grid_points(all, a, grid, (size_t)nu * (size_t)nv));
+    assert_ok(dbs_patches_boundary_points(all, a, DBS_SIDE_BOTTOM, corner, n));
+    for (int c = 0; c < 3; ++c) assert_true(fabs(grid[c] - corner[c]) < 1e-12);
+    free(grid);
+  }
+  assert_int_equal(pairs, 2 * 5); /* two side-by-side pairs in each of the 5 split patches */
+
+  /* every point names a leaf, carries that leaf's level and lies in its rectangle */
+  size_t points = 0;
+  assert_ok(dbs_result_point_count(result, &points));
+  int32_t *patch = malloc(sizeof(int32_t) * points), *point_level = malloc(sizeof(int32_t) * points);
+  double *uv = malloc(sizeof(double) * 2 * points);
+  assert_true(patch && point_level && uv);
+  assert_ok(dbs_result_point_patches(result, patch, points));
+  assert_ok(dbs_result_point_levels(result, point_level, points));
+  assert_ok(dbs_result_uv(result, uv, points));
+  size_t per_leaf[21] = {0};
+  for (size_t k = 0; k < points; ++k) {
+    const int32_t id = patch[k];
+    assert_true(id >= 0 && id < (int32_t)count && leaf[id]);
+    assert_int_equal(point_level[k], level[id]);
+    assert_true(uv[2 * k] >= rect[id][0] && uv[2 * k] <= rect[id][2] && uv[2 * k + 1] >= rect[id][1] && uv[2 * k + 1] <= rect[id][3]);
+    ++per_leaf[id];
+  }
+  size_t used = 0;
+  for (size_t i = 0; i < count; ++i) used += per_leaf[i] > 0;
+  assert_int_equal(used, 16); /* 1600 points on 16 leaves: each gets some */
+  free(patch);
+  free(point_level);
+  free(uv);
+  dbs_result_destroy(result);
+  dbs_options_destroy(options);
+  dbs_boundary_destroy(boundary);
+  dbs_cloud_destroy(cloud);
+}
+
 static void patch_indices_and_sides_are_checked(void **state) {
   struct fixture *f = *state;
   const dbs_patches *all = NULL;
@@ -395,6 +507,7 @@ int main(void) {
       cmocka_unit_test(evaluate_on_the_boundary_is_the_boundary),
       cmocka_unit_test(evaluate_outside_the_domain_fails),
       cmocka_unit_test(the_root_patch),
+      cmocka_unit_test(the_quadtree_of_a_subdivided_result),
       cmocka_unit_test(patch_indices_and_sides_are_checked),
       cmocka_unit_test(save_csv),
       cmocka_unit_test(save_ply_and_drc),

@@ -58,6 +58,17 @@ void height_field_meets_accuracy(void**) {
   Result r = parameterize(cloud, boundary_of(s, 40), o);
   assert_true(r.mean_distance <= r.accuracy);
   assert_true(r.accuracy > 0.0 && r.accuracy < 2e-3);
+  // The grid grew one row and column per iteration and stopped at the first size that met
+  // the accuracy: one size smaller misses it.
+  const Grid& grid = r.patches[0].grid;
+  assert_true(r.iterations >= 2);
+  assert_int_equal(grid.nu, o.initial_grid + r.iterations - 1);
+  assert_int_equal(grid.nv, grid.nu);
+  Options smaller = o;
+  smaller.max_grid = grid.nu - 1;
+  const Result missed = parameterize(cloud, boundary_of(s, 40), smaller);
+  assert_true(missed.mean_distance > missed.accuracy);
+  assert_int_equal(missed.patches[0].grid.nu, smaller.max_grid);
   for (std::size_t i = 0; i < pts.size(); ++i) {
     assert_true(r.u[i] >= 0.0 && r.u[i] <= 1.0 && r.v[i] >= 0.0 && r.v[i] <= 1.0);
   }

@@ -13,6 +13,7 @@
 #include "cloud_io.hpp"
 #include "error.hpp"
 #include "parameterize.hpp"
+#include "surface_projection.hpp"
 
 // cmocka last: its fail() macro would hide dbs::fail.
 #include <stdarg.h>
@@ -36,6 +37,12 @@ Surface bumpy() {
   };
 }
 
+/// The bumpy field plus ripples of wavelength 0.25 that an 11 x 11 grid cannot follow, so the
+/// root must subdivide everywhere.
+Surface rippled() {
+  return [](double x, double y) { return Vec3(bumpy()(x, y) + Vec3(0, 0, 0.03 * std::sin(8 * M_PI * x) * std::sin(8 * M_PI * y))); };
+}
+
 Options recursive(int threads = 2) {
   Options o;
   o.relative_accuracy = 2e-4;
@@ -53,6 +60,9 @@ void shoe_last_needs_the_quadtree(void**) {
   const Result one = parameterize(cloud, boundary, o);
   print_message("shoe last, one patch: %.4f\n", one.mean_distance);
   assert_true(one.mean_distance > 0.1);  // one patch at the largest grid cannot fit it
+  assert_int_equal(one.patches.size(), 1);
+  assert_int_equal(one.patches[0].grid.nu, o.max_grid);  // it grew to the largest grid first
+  assert_int_equal(one.patches[0].grid.nv, o.max_grid);
   o.max_level = 4;
   const Result tree = parameterize(cloud, boundary, o);
   assert_true(tree.mean_distance <= 0.1);
@@ -146,6 +156,34 @@ void seams_agree_and_points_are_placed_once(void**) {
   }
   assert_true(crossing > 100);
   assert_true(worst_ratio < 3.0);
+
+  // Each point's distance is the distance to the surface at its (u,v); the global evaluation
+  // is the leaf's own surface, seams included (leaf_at picks the upper leaf there).
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double gap = (r.evaluate(r.u[i], r.v[i]) - pts[i]).norm();
+    assert_true(std::abs(gap - r.distance[i]) <= 1e-9 * boundary.size());
+  }
+  for (const Patch& leaf : r.patches) {
+    if (!leaf.is_leaf()) continue;
+    for (double a : {0.0, 0.3, 1.0})
+      for (double b : {0.0, 0.7, 1.0}) {
+        const double u = leaf.rect.u0 + a * (leaf.rect.u1 - leaf.rect.u0), v = leaf.rect.v0 + b * (leaf.rect.v1 - leaf.rect.v0);
+        const Vec2 s = leaf.rect.to_local(u, v);
+        assert_true((r.evaluate(u, v) - leaf.surface.eval(s.x(), s.y())).norm() <= 1e-12 * boundary.size());
+      }
+  }
+  // A2: no leaf whose subcloud holds a point comes closer to it than the leaf it was given.
+  std::size_t checked = 0;
+  for (const Patch& leaf : r.patches) {
+    if (!leaf.is_leaf()) continue;
+    SurfaceProjector projector(leaf.surface);
+    for (std::size_t k = 0; k < leaf.subcloud.size(); k += 7) {
+      const std::size_t i = leaf.subcloud[k];
+      assert_true(projector.project(pts[i]).distance >= r.distance[i] - 1e-12 * boundary.size());
+      ++checked;
+    }
+  }
+  assert_true(checked > pts.size() / 7);
 }
 
 /// Points on a structured grid of analytic parameters (a_i, b_j), with the grid's triangles
@@ -202,6 +240,40 @@ std::size_t folded(const GridCloud& g, const Result& r) {
 void large_hole_does_not_fold(void**) {
   const GridCloud g = grid_cloud(bumpy(), uniform(120), uniform(120), [](double a, double b) { return std::hypot(a - 0.45, b - 0.4) > 0.22; }, 0.0, 1);
   const Result r = parameterize(PointCloud(g.points), boundary_of(bumpy(), 40), recursive());
+  assert_true(r.levels >= 2);
+  assert_int_equal(folded(g, r), 0);
+  assert_true(r.mean_distance <= r.accuracy);
+}
+
+void patches_over_a_hole_stay_empty_and_do_not_fold(void**) {
+  // The ripples make the patches subdivide; the hole swallows whole patches,
+  // which get no points and keep their parent's shape: not exactly, as their sides include
+  // the parent's middle curves, projected onto the points around the hole.
+  const Surface s = rippled();
+  const GridCloud g = grid_cloud(s, uniform(241), uniform(241), [](double a, double b) { return std::hypot(a - 0.4, b - 0.4) > 0.28; }, 0.0, 4, 2);
+  const Boundary boundary = boundary_of(s, 40);
+  Options o = recursive();
+  o.accuracy = 6e-4;  // what level 3 reaches on these ripples
+  const Result r = parameterize(PointCloud(g.points), boundary, o);
+  std::size_t empty = 0;
+  double worst = 0.0;
+  for (const Patch& p : r.patches) {
+    if (p.point_count != 0) continue;
+    ++empty;
+    assert_true(p.is_leaf());  // nothing to refine
+    assert_int_equal(p.iterations, 0);
+    // Its surface is its parent's over its rectangle.
+    const Patch& parent = r.patches[p.parent];
+    for (double a : {0.1, 0.5, 0.9})
+      for (double b : {0.2, 0.6}) {
+        const double u = p.rect.u0 + a * (p.rect.u1 - p.rect.u0), v = p.rect.v0 + b * (p.rect.v1 - p.rect.v0);
+        const Vec2 lc = p.rect.to_local(u, v), lp = parent.rect.to_local(u, v);
+        worst = std::max(worst, (p.surface.eval(lc.x(), lc.y()) - parent.surface.eval(lp.x(), lp.y())).norm());
+      }
+  }
+  print_message("%zu empty patches, up to %.2g from their parents\n", empty, worst);
+  assert_true(worst <= 0.01 * boundary.size());
+  assert_true(empty >= 1);
   assert_int_equal(folded(g, r), 0);
   assert_true(r.mean_distance <= r.accuracy);
 }
@@ -211,9 +283,7 @@ void thick_cloud_does_not_fold(void**) {
   // reference triangles join every 4th point (edges about 5 noise deviations long): finer
   // ones would fold in the cloud itself, whatever the parameterization.
   const double size = std::sqrt(2.0), noise = 0.005 * size;
-  // Ripples of wavelength 0.25 that an 11 x 11 grid cannot follow, so that one patch cannot
-  // reach the target.
-  const Surface sharp = [](double x, double y) { return Vec3(bumpy()(x, y) + Vec3(0, 0, 0.03 * std::sin(8 * M_PI * x) * std::sin(8 * M_PI * y))); };
+  const Surface sharp = rippled();  // one patch cannot reach the target
   const GridCloud g = grid_cloud(sharp, uniform(109), uniform(109), [](double, double) { return true; }, noise, 2, 4);
   Options o = recursive();
   o.accuracy = noise;  // the mean absolute noise is 0.8 sigma
@@ -231,6 +301,7 @@ void density_change_does_not_fold(void**) {
   as.push_back(1.0);
   const GridCloud g = grid_cloud(bumpy(), as, uniform(60), [](double, double) { return true; }, 0.0, 3);
   const Result r = parameterize(PointCloud(g.points), boundary_of(bumpy(), 40), recursive());
+  assert_true(r.levels >= 2);
   assert_int_equal(folded(g, r), 0);
   assert_true(r.mean_distance <= r.accuracy);
 }
@@ -317,6 +388,7 @@ int main() {
       cmocka_unit_test(shoe_last_needs_the_quadtree),
       cmocka_unit_test(seams_agree_and_points_are_placed_once),
       cmocka_unit_test(large_hole_does_not_fold),
+      cmocka_unit_test(patches_over_a_hole_stay_empty_and_do_not_fold),
       cmocka_unit_test(thick_cloud_does_not_fold),
       cmocka_unit_test(density_change_does_not_fold),
       cmocka_unit_test(thread_count_does_not_change_output),
