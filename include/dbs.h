@@ -138,14 +138,14 @@ typedef struct dbs_options dbs_options;
  * rules (initial grid <= max grid, own <= near), order matters: raise DBS_OPT_MAX_GRID before
  * setting DBS_OPT_INITIAL_GRID above it. */
 #define DBS_OPT_ACCURACY 0          /* double; 0 = unset; >= 0. Mean-distance target in cloud units. */
-#define DBS_OPT_RELATIVE_ACCURACY 1 /* double; 1e-3; [1e-9, 1]. Target as a fraction of the cloud's bounding-box diagonal, used while DBS_OPT_ACCURACY is 0. */
+#define DBS_OPT_RELATIVE_ACCURACY 1 /* double; 1e-3; [1e-9, 1]. Target as a fraction of the diagonal of the cloud's bounding box, measured in the frame of the boundary's corners (so that a rigid motion does not change it), used while DBS_OPT_ACCURACY is 0. */
 #define DBS_OPT_MAX_LEVEL 2         /* int; 4; [0, 8]. Quadtree depth; 0 = a single base surface. */
 #define DBS_OPT_INITIAL_GRID 3      /* int; 5; [3, 100]. Grid points per side of a new patch. */
 #define DBS_OPT_MAX_GRID 4          /* int; 11; [3, 200], >= initial grid. Largest grid before subdividing. */
 #define DBS_OPT_SMOOTHING 5         /* double; 0.5; [0, 0.99]. Weight gamma of eq. (6). */
 #define DBS_OPT_SOLVER 6            /* int; DBS_SOLVER_LINEAR; [0, 1]. */
 #define DBS_OPT_THREADS 7           /* int; 0 = all hardware threads; [0, 256]. Output never depends on it. */
-#define DBS_OPT_SUBCLOUD_NEAR 8     /* double; 0.25; (0, 10]. A4.3 "near" limit, fraction of the child's diagonal. */
+#define DBS_OPT_SUBCLOUD_NEAR 8     /* double; 0.25; (0, 10]. A4.3 "near" limit, fraction of the diagonal of the child's bounding box in the frame of its corners. */
 #define DBS_OPT_SUBCLOUD_OWN 9      /* double; 0.05; [0, 10], <= near. A4.4 "own" limit, fraction of the child's diagonal. */
 
 #define DBS_SOLVER_LINEAR 0 /* banded linear least squares (always available) */

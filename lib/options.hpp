@@ -17,7 +17,7 @@ using LevelFn = std::function<bool(int level, const std::vector<const Patch*>& p
 
 struct Options {
   double accuracy = 0.0;            // absolute mean-distance target; 0 = use relative_accuracy
-  double relative_accuracy = 1e-3;  // fraction of the cloud's bounding-box diagonal
+  double relative_accuracy = 1e-3;  // fraction of the cloud's box diagonal (CornerFrameBox)
   int max_level = 4;
   int initial_grid = 5;
   int max_grid = 11;

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "cloud_index.hpp"
+#include "corner_frame.hpp"
 #include "error.hpp"
 #include "evolve.hpp"
 #include "parallel.hpp"
@@ -35,11 +36,19 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 /// so each level gets half of what is left).
 double level_progress_end(int level) { return kIndexEnd + (kLevelsEnd - kIndexEnd) * (1.0 - std::pow(0.5, level + 1)); }
 
+/// The cloud's bounding-box diagonal in the frame of the boundary's corners, so that a rigid
+/// motion of the input does not change the relative accuracy.
+double cloud_size(const PointCloud& cloud, const Boundary& boundary) {
+  CornerFrameBox box(boundary);
+  for (const Vec3& p : cloud.points()) box.extend(p);
+  return box.diagonal();
+}
+
 class Driver {
  public:
   Driver(const PointCloud& cloud, const Boundary& boundary, const Options& options)
       : points_(cloud.points()), options_(options), progress_(options.progress), threads_(resolve_threads(options.threads)), caller_(std::this_thread::get_id()) {
-    result_.accuracy = options.accuracy > 0.0 ? options.accuracy : options.relative_accuracy * cloud.bounds().diagonal();
+    result_.accuracy = options.accuracy > 0.0 ? options.accuracy : options.relative_accuracy * cloud_size(cloud, boundary);
     Patch root{BaseSurface(boundary)};
     root.subcloud.resize(points_.size());
     std::iota(root.subcloud.begin(), root.subcloud.end(), std::size_t{0});

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "corner_frame.hpp"
 #include "error.hpp"
 #include "parallel.hpp"
 #include "surface_projection.hpp"
@@ -26,17 +27,25 @@ constexpr double kBoxPadding = 0.02;
 struct ChildTest {
   std::unique_ptr<SurfaceProjector> projector;
   Box3 box;           // padded
-  double near_limit;  // near x bounding-box diagonal
-  double own_limit;   // own x bounding-box diagonal
+  double near_limit;  // near x the child's bounding-box diagonal
+  double own_limit;   // own x that diagonal
 
   ChildTest(const BaseSurface& surface, double near, double own) : projector(std::make_unique<SurfaceProjector>(surface)) {
+    // The limits come from the child's box in the frame of its corners (unchanged by a
+    // rigid motion); the axis-aligned box only speeds up the search.
+    CornerFrameBox turning(surface.boundary());
     box = surface.boundary().bounds();
-    for (const Vec3& p : surface.sample(kBoundsSamples, kBoundsSamples).points) box.extend(p);
-    const double diagonal = box.diagonal();
-    near_limit = near * diagonal;
-    own_limit = own * diagonal;
-    box.min.array() -= kBoxPadding * diagonal;
-    box.max.array() += kBoxPadding * diagonal;
+    for (const Vec3& p : surface.sample(kBoundsSamples, kBoundsSamples).points) {
+      box.extend(p);
+      turning.extend(p);
+    }
+    for (int s = 0; s < 4; ++s)
+      for (const Vec3& p : surface.boundary().side(static_cast<Side>(s)).points()) turning.extend(p);
+    near_limit = near * turning.diagonal();
+    own_limit = own * turning.diagonal();
+    const double padding = kBoxPadding * box.diagonal();
+    box.min.array() -= padding;
+    box.max.array() += padding;
   }
 
   /// A lower bound of the distance of p to the surface: its distance to the box.

@@ -1,7 +1,8 @@
 // Algorithm A4: distribute a parent's subcloud among its four children. Every parent point
 // is projected onto each child (points whose foot is outside the child or missing use the
 // nearest point of the child's boundary); a point joins a child when its distance is within
-// `near` x the child's bounding-box diagonal, and belongs only to that child when within
+// `near` x the child's bounding-box diagonal (measured in the frame of its corners, see
+// corner_frame.hpp), and belongs only to that child when within
 // `own` x that diagonal (when several children qualify, the nearest; ties go to the first in
 // child order, so the split is deterministic). A point near no child joins the nearest one,
 // so the parent's subcloud is the union of the children's. Each list keeps the order of

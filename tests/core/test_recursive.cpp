@@ -306,6 +306,30 @@ void density_change_does_not_fold(void**) {
   assert_true(r.mean_distance <= r.accuracy);
 }
 
+void quadtree_is_invariant_to_scale_and_rigid_motion(void**) {
+  // Every limit is relative (the accuracy to the cloud's box, the subcloud limits to the
+  // child's box, both boxes in the frame of the corners; distances to the length scale), so
+  // the same quadtree and (u,v) come out.
+  const Surface s = bumpy();
+  const Surface moved = [&](double a, double b) { return move_and_scale(s(a, b), 1000.0); };
+  const Result a = parameterize(PointCloud(random_points(s, 8000, 19)), boundary_of(s, 40), recursive());
+  const Result b = parameterize(PointCloud(random_points(moved, 8000, 19)), boundary_of(moved, 40), recursive());
+  assert_true(a.levels >= 2);
+  assert_int_equal(a.levels, b.levels);
+  assert_int_equal(a.patches.size(), b.patches.size());
+  for (std::size_t k = 0; k < a.patches.size(); ++k) {
+    assert_int_equal(a.patches[k].point_count, b.patches[k].point_count);
+    assert_int_equal(a.patches[k].grid.nu, b.patches[k].grid.nu);
+  }
+  double worst = 0.0;
+  for (std::size_t i = 0; i < a.u.size(); ++i) {
+    assert_int_equal(a.patch[i], b.patch[i]);
+    worst = std::max({worst, std::abs(a.u[i] - b.u[i]), std::abs(a.v[i] - b.v[i]), std::abs(a.distance[i] * 1000.0 - b.distance[i]) / 1000.0});
+  }
+  print_message("scaled and moved quadtree: (u,v) differ by %.2g\n", worst);
+  assert_true(worst < 1e-9);
+}
+
 void thread_count_does_not_change_output(void**) {
   const PointCloud cloud(random_points(bumpy(), 12000, 13));
   const Boundary boundary = boundary_of(bumpy(), 40);
@@ -391,6 +415,7 @@ int main() {
       cmocka_unit_test(patches_over_a_hole_stay_empty_and_do_not_fold),
       cmocka_unit_test(thick_cloud_does_not_fold),
       cmocka_unit_test(density_change_does_not_fold),
+      cmocka_unit_test(quadtree_is_invariant_to_scale_and_rigid_motion),
       cmocka_unit_test(thread_count_does_not_change_output),
       cmocka_unit_test(callbacks_in_order_and_cancel_everywhere),
   };
