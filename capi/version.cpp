@@ -1,4 +1,5 @@
-// Version queries, status names and the last-error message.
+// Version and feature queries, status names and the last-error message.
+#include "draco_io.hpp"
 #include "firewall.hpp"
 
 #define DBS_STRINGIFY_(x) #x
@@ -8,6 +9,14 @@ int32_t dbs_version_number(void) { return DBS_VERSION_NUMBER; }
 
 const char* dbs_version_string(void) {
   return DBS_STRINGIFY(DBS_VERSION_MAJOR) "." DBS_STRINGIFY(DBS_VERSION_MINOR) "." DBS_STRINGIFY(DBS_VERSION_PATCH);
+}
+
+int dbs_has_feature(int32_t feature, int32_t* out) {
+  return dbs::capi::guarded(__func__, [&] {
+    dbs::capi::require_non_null(out, "out");
+    dbs::capi::require_index("feature", feature, 1);
+    *out = dbs::draco_available() ? 1 : 0;
+  });
 }
 
 const char* dbs_status_string(int status) {

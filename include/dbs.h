@@ -69,6 +69,13 @@ DBS_API int32_t dbs_version_number(void);
 /** Version of the library actually loaded, "MAJOR.MINOR.PATCH"; static storage. */
 DBS_API const char *dbs_version_string(void);
 
+/* Optional parts of the loaded library (pinned ids) for dbs_has_feature. */
+#define DBS_FEATURE_DRACO 0 /* Draco: clouds from .ply, .obj, .drc (dbs_cloud_load) and results to .drc (dbs_result_save) */
+/** Sets *out to 1 when the loaded library was built with `feature` (DBS_FEATURE_*), else 0;
+ *  DBS_ERR_OUT_OF_RANGE for an id not listed. Without a feature, the calls that need it
+ *  fail with DBS_ERR_UNSUPPORTED. */
+DBS_API int dbs_has_feature(int32_t feature, int32_t *out);
+
 /* ---- status codes (pinned: never renumbered) ------------------------------------ */
 #define DBS_OK 0
 #define DBS_ERR_NULL_ARGUMENT -1     /* a required pointer argument is NULL */

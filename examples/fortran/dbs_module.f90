@@ -12,6 +12,7 @@ module dbs
 
   ! ---- version ----------------------------------------------------------------------
   integer(c_int32_t), parameter :: DBS_VERSION_MAJOR = 0, DBS_VERSION_MINOR = 1, DBS_VERSION_PATCH = 0
+  integer(c_int32_t), parameter :: DBS_FEATURE_DRACO = 0
 
   ! ---- status codes (pinned) ---------------------------------------------------------
   integer(c_int), parameter :: DBS_OK = 0
@@ -64,6 +65,12 @@ module dbs
     function dbs_version_string() bind(C, name="dbs_version_string")
       import :: c_ptr
       type(c_ptr) :: dbs_version_string
+    end function
+    function dbs_has_feature(feature, out) bind(C, name="dbs_has_feature")
+      import :: c_int, c_int32_t
+      integer(c_int32_t), value :: feature
+      integer(c_int32_t), intent(out) :: out
+      integer(c_int) :: dbs_has_feature
     end function
     function dbs_status_string(status) bind(C, name="dbs_status_string")
       import :: c_ptr, c_int

@@ -61,6 +61,8 @@ OPT_SUBCLOUD_NEAR = 8
 OPT_SUBCLOUD_OWN = 9
 INT_OPTIONS = (OPT_MAX_LEVEL, OPT_INITIAL_GRID, OPT_MAX_GRID, OPT_SOLVER, OPT_THREADS)
 
+FEATURE_DRACO = 0
+
 SOLVER_LINEAR = 0
 SOLVER_CERES = 1
 
@@ -135,6 +137,7 @@ PROTOTYPES = {
     # name: (restype, argtypes)
     "dbs_version_number": (_i32, []),
     "dbs_version_string": (_str, []),
+    "dbs_has_feature": (_int, [_i32, _P(_i32)]),
     "dbs_status_string": (_str, [_int]),
     "dbs_last_error_message": (_str, []),
     "dbs_cloud_create": (_int, [_P(_dbl), _size, _P(_ptr)]),
@@ -228,6 +231,13 @@ def _check(status):
 def version():
     """The loaded library's version string, e.g. "0.1.0"."""
     return lib.dbs_version_string().decode()
+
+
+def has_feature(feature):
+    """True when the loaded library was built with `feature` (FEATURE_*)."""
+    out = _i32(0)
+    _check(lib.dbs_has_feature(feature, ctypes.byref(out)))
+    return bool(out.value)
 
 
 def _points_array(points):

@@ -12,7 +12,7 @@ def main(argv):
         print(__doc__.strip().splitlines()[-1], file=sys.stderr)
         return 2
     cloud_path, boundary_path = argv[1], argv[2]
-    print(f"libdbs {dbs.version()}")
+    print(f"libdbs {dbs.version()}, Draco {'yes' if dbs.has_feature(dbs.FEATURE_DRACO) else 'no'}")
 
     cloud = dbs.Cloud.load(cloud_path)
     boundary = dbs.Boundary.load(boundary_path)

@@ -24,6 +24,30 @@ static void at_least_version_compares(void **state) {
   assert_false(DBS_AT_LEAST_VERSION(DBS_VERSION_MAJOR + 1, 0, 0));
 }
 
+/* dbs_has_feature tells the truth: with Draco a PLY cloud loads, without it the load is
+ * refused as unsupported; unknown ids and a NULL out are refused. */
+static void features_are_reported(void **state) {
+  (void)state;
+  int32_t draco = -1;
+  assert_ok(dbs_has_feature(DBS_FEATURE_DRACO, &draco));
+  assert_true(draco == 0 || draco == 1);
+  char path[512];
+  temp_path(path, sizeof path, "feature.ply");
+  write_text(path, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n");
+  dbs_cloud *cloud = NULL;
+  if (draco) {
+    assert_ok(dbs_cloud_load(path, &cloud));
+    dbs_cloud_destroy(cloud);
+  } else {
+    assert_failure(dbs_cloud_load(path, &cloud), DBS_ERR_UNSUPPORTED, "dbs_cloud_load", "Draco");
+  }
+  int32_t out = -7;
+  assert_failure(dbs_has_feature(1, &out), DBS_ERR_OUT_OF_RANGE, "dbs_has_feature", "feature 1 is outside its range [0, 1)");
+  assert_failure(dbs_has_feature(-1, &out), DBS_ERR_OUT_OF_RANGE, "dbs_has_feature", "feature -1 ");
+  assert_int_equal(out, -7);
+  assert_failure(dbs_has_feature(DBS_FEATURE_DRACO, NULL), DBS_ERR_NULL_ARGUMENT, "dbs_has_feature", "'out'");
+}
+
 static void every_status_has_its_name(void **state) {
   (void)state;
   static const struct {
@@ -115,6 +139,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(version_macros_equal_runtime),
       cmocka_unit_test(at_least_version_compares),
+      cmocka_unit_test(features_are_reported),
       cmocka_unit_test(every_status_has_its_name),
       cmocka_unit_test(unknown_status_is_named_unknown),
       cmocka_unit_test(last_error_is_per_thread),
