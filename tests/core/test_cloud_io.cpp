@@ -165,7 +165,7 @@ void example_data_loads(void**) {
 // ---- PLY -----------------------------------------------------------------------------------
 
 void ascii_ply_round_trips(void**) {
-  if (!dbs::draco_available()) return;
+  if (!dbs::draco_available()) skip();  // reported as skipped, not passed
   // float properties, values exact in float: exact
   const auto exact = float_exact_points(300);
   const std::string f = write_tmp("cloud_io_ascii_float.PLY", ply_header("ascii", exact.size(), "float") + ascii_rows(exact));
@@ -182,7 +182,7 @@ void ascii_ply_round_trips(void**) {
 }
 
 void binary_ply_round_trips_both_byte_orders(void**) {
-  if (!dbs::draco_available()) return;
+  if (!dbs::draco_available()) skip();  // reported as skipped, not passed
   const auto pts = awkward_points(1000);
   assert_same_points(dbs::read_positions_with_draco(write_tmp("cloud_io_le.ply", binary_ply(pts, false))), pts, 0.0);
   assert_same_points(dbs::read_positions_with_draco(write_tmp("cloud_io_be.ply", binary_ply(pts, true))), pts, 0.0);
@@ -198,7 +198,7 @@ void binary_ply_round_trips_both_byte_orders(void**) {
 }
 
 void ply_rejects_malformed_truncated_nonfinite_and_empty(void**) {
-  if (!dbs::draco_available()) return;
+  if (!dbs::draco_available()) skip();  // reported as skipped, not passed
   const std::string header = ply_header("ascii", 5, "float");  // 8 lines
   // ASCII: vertex 2 (line 11) holds a word
   const std::string bad = write_tmp("cloud_io_bad.ply", header + "1 2 3\n4 5 6\n7 abc 9\n10 11 12\n13 14 15\n");
@@ -253,7 +253,7 @@ void ply_rejects_malformed_truncated_nonfinite_and_empty(void**) {
 // ---- OBJ -----------------------------------------------------------------------------------
 
 void obj_reads_every_v_line_and_ignores_the_rest(void**) {
-  if (!dbs::draco_available()) return;
+  if (!dbs::draco_available()) skip();  // reported as skipped, not passed
   const std::string text =
       "# exported mesh\n"
       "mtllib missing.mtl\n"
@@ -278,7 +278,7 @@ void obj_reads_every_v_line_and_ignores_the_rest(void**) {
 }
 
 void obj_rejects_malformed_truncated_nonfinite_and_empty(void**) {
-  if (!dbs::draco_available()) return;
+  if (!dbs::draco_available()) skip();  // reported as skipped, not passed
   const std::string bad = write_tmp("cloud_io_bad.obj", "# c\nv 1 2 3\nvn 0 0 1\nv 4 abc 6\nv 7 8 9\n");
   expect_error([&] { dbs::load_cloud(bad); }, ErrorCode::Parse, {bad + ":4:", "vertex 1", "'abc'"});
   const std::string truncated = write_tmp("cloud_io_truncated.obj", "v 1 2 3\nv 4 5 6\nv 7 8");
@@ -330,7 +330,7 @@ void drc_round_trips_within_quantization(void**) {
 }
 
 void drc_rejects_garbage_truncated_and_empty(void**) {
-  if (!dbs::draco_available()) return;
+  if (!dbs::draco_available()) skip();  // reported as skipped, not passed
   const std::string garbage = write_tmp("cloud_io_garbage.drc", "this is not a Draco file at all\n");
   expect_error([&] { dbs::load_cloud(garbage); }, ErrorCode::Parse, {garbage, "not a valid Draco file"});
   const auto pts = awkward_points(500);

@@ -117,6 +117,16 @@ void write_text(const char *path, const char *text) {
   assert_int_equal(fclose(file), 0);
 }
 
+int reads_with_draco(const char *path) {
+  int32_t draco = -1;
+  assert_ok(dbs_has_feature(DBS_FEATURE_DRACO, &draco));
+  if (draco) return 1;
+  dbs_cloud *cloud = NULL;
+  assert_failure(dbs_cloud_load(path, &cloud), DBS_ERR_UNSUPPORTED, "dbs_cloud_load", "built without Draco");
+  assert_null(cloud);
+  return 0;
+}
+
 void check_failure(int status, int expected, const char *function, const char *needle, const char *file, int line) {
   const char *message = dbs_last_error_message();
   size_t prefix = strlen(function);
