@@ -41,8 +41,9 @@ struct ChildTest {
     }
     for (int s = 0; s < 4; ++s)
       for (const Vec3& p : surface.boundary().side(static_cast<Side>(s)).points()) turning.extend(p);
-    near_limit = near * turning.diagonal();
-    own_limit = own * turning.diagonal();
+    const double diagonal = turning.diagonal();
+    near_limit = near * diagonal;
+    own_limit = own * diagonal;
     const double padding = kBoxPadding * box.diagonal();
     box.min.array() -= padding;
     box.max.array() += padding;

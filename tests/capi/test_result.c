@@ -451,9 +451,7 @@ static void save_ply_and_drc(void **state) {
   assert_reloads_as_the_cloud(path, 1e-6);
 
   temp_path(path, sizeof path, "result.drc");
-  int32_t draco = 0;
-  assert_ok(dbs_has_feature(DBS_FEATURE_DRACO, &draco));
-  if (!draco) {
+  if (!has_draco()) {
     assert_failure(dbs_result_save(f->result, f->cloud, path), DBS_ERR_UNSUPPORTED, "dbs_result_save", "built without Draco");
     return;
   }

@@ -117,10 +117,15 @@ void write_text(const char *path, const char *text) {
   assert_int_equal(fclose(file), 0);
 }
 
-int reads_with_draco(const char *path) {
+int has_draco(void) {
   int32_t draco = -1;
   assert_ok(dbs_has_feature(DBS_FEATURE_DRACO, &draco));
-  if (draco) return 1;
+  assert_true(draco == 0 || draco == 1);
+  return draco;
+}
+
+int reads_with_draco(const char *path) {
+  if (has_draco()) return 1;
   dbs_cloud *cloud = NULL;
   assert_failure(dbs_cloud_load(path, &cloud), DBS_ERR_UNSUPPORTED, "dbs_cloud_load", "built without Draco");
   assert_null(cloud);

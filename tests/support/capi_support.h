@@ -40,7 +40,9 @@ void temp_path(char *buffer, size_t size, const char *name);
 /* Writes `text` to `path`, failing the test if that is impossible. */
 void write_text(const char *path, const char *text);
 
-/* 1 when the loaded libdbs has Draco (dbs_has_feature). Without it, asserts that loading
+/* 1 when the loaded libdbs has Draco (dbs_has_feature), else 0. */
+int has_draco(void);
+/* 1 when the loaded libdbs has Draco. Without it, asserts that loading
  * `path` (a .ply, .obj or .drc file) is refused as unsupported, naming Draco, and returns 0:
  * the caller then skips what only Draco can read. */
 int reads_with_draco(const char *path);
