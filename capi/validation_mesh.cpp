@@ -1,12 +1,14 @@
 // dbs_mesh_*: the Delaunay mesh of a result's (u,v) over its cloud, and its files.
 #include <algorithm>
-#include <cctype>
 #include <limits>
 #include <string>
 
 #include "arrays.hpp"
-#include "circle_pattern.hpp"
 #include "mesh_files.hpp"
+#include "text_io.hpp"
+#ifdef DBS_HAVE_REPORT
+#include "textured_mesh.hpp"
+#endif
 #include "suspicious_triangles.hpp"
 #include "validation_handles.hpp"
 
@@ -16,18 +18,8 @@ static_assert(DBS_MESH_SUSPICIOUS_FACTOR == dbs::kSuspiciousEdgeFactor, "dbs.h a
 
 namespace {
 
-constexpr int kTextureSize = 1024;
 // The default thread count of a run (all hardware threads); the mesh does not depend on it.
 constexpr int kAllThreads = 0;
-
-std::string lowercase_extension(const std::string& path) {
-  std::size_t dot = path.find_last_of('.');
-  std::size_t slash = path.find_last_of("/\\");
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  std::string ext = path.substr(dot);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
 
 }  // namespace
 
@@ -113,13 +105,14 @@ int dbs_mesh_save(const dbs_mesh* mesh, const char* path) {
   return guarded(__func__, [&] {
     require_non_null(mesh, "mesh");
     require_non_null(path, "path");
-    const std::string file = path, ext = lowercase_extension(file);
+    const std::string file = path, ext = dbs::lowercase_extension(file);
     const dbs::ValidationMesh& m = mesh->mesh;
     if (ext == ".obj") {
-      // The texture's aspect follows the surface's, so its disks are round on the mesh.
-      const dbs::Distortion d = dbs::measure_distortion(mesh->cloud.points(), mesh->u, mesh->v, m.triangles, dbs::DomainScaling::PerAxis, m.surface_normals);
-      const dbs::CirclePattern pattern(d.summary.scale_u, d.summary.scale_v);
-      dbs::write_textured_obj(file, mesh->cloud.points(), mesh->u, mesh->v, m.triangles, pattern.texture(kTextureSize));
+#ifdef DBS_HAVE_REPORT
+      dbs::write_textured_obj(file, mesh->cloud.points(), mesh->u, mesh->v, m.triangles, m.surface_normals);
+#else
+      fail_status(DBS_ERR_UNSUPPORTED, "cannot save the textured mesh '" + file + "': this libdbs was built without the report (DBS_WITH_REPORT=OFF); .ply works");
+#endif
     } else if (ext == ".ply") {
       dbs::write_ply_mesh(file, mesh->cloud.points(), mesh->u, mesh->v, m.triangles);
     } else {

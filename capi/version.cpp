@@ -2,6 +2,19 @@
 #include "draco_io.hpp"
 #include "firewall.hpp"
 
+namespace {
+#ifdef DBS_HAVE_VALIDATION
+constexpr int32_t kBuiltValidation = 1;
+#else
+constexpr int32_t kBuiltValidation = 0;
+#endif
+#ifdef DBS_HAVE_REPORT
+constexpr int32_t kBuiltReport = 1;
+#else
+constexpr int32_t kBuiltReport = 0;
+#endif
+}  // namespace
+
 #define DBS_STRINGIFY_(x) #x
 #define DBS_STRINGIFY(x) DBS_STRINGIFY_(x)
 
@@ -14,8 +27,18 @@ const char* dbs_version_string(void) {
 int dbs_has_feature(int32_t feature, int32_t* out) {
   return dbs::capi::guarded(__func__, [&] {
     dbs::capi::require_non_null(out, "out");
-    dbs::capi::require_index("feature", feature, 1);
-    *out = dbs::draco_available() ? 1 : 0;
+    dbs::capi::require_index("feature", feature, 3);
+    switch (feature) {
+      case DBS_FEATURE_DRACO:
+        *out = dbs::draco_available() ? 1 : 0;
+        break;
+      case DBS_FEATURE_VALIDATION:
+        *out = kBuiltValidation;
+        break;
+      default:  // DBS_FEATURE_REPORT
+        *out = kBuiltReport;
+        break;
+    }
   });
 }
 

@@ -57,7 +57,7 @@ extern "C" {
 
 /* ---- version ------------------------------------------------------------------ */
 #define DBS_VERSION_MAJOR 0
-#define DBS_VERSION_MINOR 1
+#define DBS_VERSION_MINOR 2
 #define DBS_VERSION_PATCH 0
 /** MAJOR*10000 + MINOR*100 + PATCH */
 #define DBS_VERSION_NUMBER (DBS_VERSION_MAJOR * 10000 + DBS_VERSION_MINOR * 100 + DBS_VERSION_PATCH)
@@ -70,7 +70,9 @@ DBS_API int32_t dbs_version_number(void);
 DBS_API const char *dbs_version_string(void);
 
 /* Optional parts of the loaded library (pinned ids) for dbs_has_feature. */
-#define DBS_FEATURE_DRACO 0 /* Draco: clouds from .ply, .obj, .drc (dbs_cloud_load) and results to .drc (dbs_result_save) */
+#define DBS_FEATURE_DRACO 0      /* Draco: clouds from .ply, .obj, .drc (dbs_cloud_load) and results to .drc (dbs_result_save) */
+#define DBS_FEATURE_VALIDATION 1 /* \since 0.2: dbs_mesh_*, dbs_distortion_*, dbs_distances_* (Qhull) */
+#define DBS_FEATURE_REPORT 2     /* \since 0.2: dbs_report_write and the textured .obj of dbs_mesh_save (libpng) */
 /** Sets *out to 1 when the loaded library was built with `feature` (DBS_FEATURE_*), else 0;
  *  DBS_ERR_OUT_OF_RANGE for an id not listed. Without a feature, the calls that need it
  *  fail with DBS_ERR_UNSUPPORTED. */

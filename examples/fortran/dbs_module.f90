@@ -11,8 +11,10 @@ module dbs
   implicit none
 
   ! ---- version ----------------------------------------------------------------------
-  integer(c_int32_t), parameter :: DBS_VERSION_MAJOR = 0, DBS_VERSION_MINOR = 1, DBS_VERSION_PATCH = 0
+  integer(c_int32_t), parameter :: DBS_VERSION_MAJOR = 0, DBS_VERSION_MINOR = 2, DBS_VERSION_PATCH = 0
   integer(c_int32_t), parameter :: DBS_FEATURE_DRACO = 0
+  integer(c_int32_t), parameter :: DBS_FEATURE_VALIDATION = 1
+  integer(c_int32_t), parameter :: DBS_FEATURE_REPORT = 2
 
   ! ---- status codes (pinned) ---------------------------------------------------------
   integer(c_int), parameter :: DBS_OK = 0

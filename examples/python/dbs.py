@@ -28,7 +28,7 @@ lib = _load_library()
 # ---- constants of dbs.h (the DBS_ prefix dropped) --------------------------------------------
 
 VERSION_MAJOR = 0
-VERSION_MINOR = 1
+VERSION_MINOR = 2
 VERSION_PATCH = 0
 
 OK = 0
@@ -62,6 +62,8 @@ OPT_SUBCLOUD_OWN = 9
 INT_OPTIONS = (OPT_MAX_LEVEL, OPT_INITIAL_GRID, OPT_MAX_GRID, OPT_SOLVER, OPT_THREADS)
 
 FEATURE_DRACO = 0
+FEATURE_VALIDATION = 1
+FEATURE_REPORT = 2
 
 SOLVER_LINEAR = 0
 SOLVER_CERES = 1

@@ -11,7 +11,8 @@
 #include "circle_pattern.hpp"
 #include "error.hpp"
 #include "mesh_files.hpp"
-#include "png_image.hpp"
+#include "png_file.hpp"
+#include "textured_mesh.hpp"
 
 // cmocka last (its fail() macro would hide dbs::fail), with C linkage.
 #include <stdarg.h>

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "error.hpp"
-#include "png_image.hpp"
+#include "png_file.hpp"
 
 // cmocka last (its fail() macro would hide dbs::fail), with C linkage.
 #include <stdarg.h>

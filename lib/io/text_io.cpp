@@ -43,6 +43,18 @@ bool parse_number(std::string_view token, double& out) {
   return ec == std::errc();
 }
 
+void append_number(std::string& out, double x) {
+  char buf[32];
+  const auto end = std::to_chars(buf, buf + sizeof buf, x).ptr;
+  out.append(buf, end);
+}
+
+void append_integer(std::string& out, long long x) {
+  char buf[24];
+  const auto end = std::to_chars(buf, buf + sizeof buf, x).ptr;
+  out.append(buf, end);
+}
+
 std::string lowercase_extension(const std::string& path) {
   const std::size_t dot = path.find_last_of('.');
   const std::size_t slash = path.find_last_of("/\\");

@@ -1,6 +1,5 @@
 #include "result_io.hpp"
 
-#include <charconv>
 #include <cstdint>
 #include <cstring>
 
@@ -11,19 +10,6 @@
 namespace dbs {
 
 namespace {
-
-// Shortest text that reads back to the same double (std::to_chars without a precision).
-void append_number(std::string& out, double x) {
-  char buf[32];
-  const auto end = std::to_chars(buf, buf + sizeof buf, x).ptr;
-  out.append(buf, end);
-}
-
-void append_integer(std::string& out, long long x) {
-  char buf[24];
-  const auto end = std::to_chars(buf, buf + sizeof buf, x).ptr;
-  out.append(buf, end);
-}
 
 void write_csv(const Result& result, const std::string& path) {
   OutputFile file(path);

@@ -1,5 +1,4 @@
-// An 8-bit RGB picture and its PNG encoding (libpng's simplified API). Only png_image.cpp
-// includes libpng.
+// An 8-bit RGB picture in memory (its PNG encoding is report/png_file).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -31,11 +30,5 @@ class RgbImage {
   int width_, height_;
   std::vector<std::uint8_t> bytes_;
 };
-
-/// Writes `image` as an 8-bit RGB PNG; Error(Io) naming the file and libpng's message.
-void write_png(const std::string& path, const RgbImage& image);
-/// Reads any PNG, converted to 8-bit RGB (alpha composited on white); Error(Io) when the
-/// file cannot be opened, Error(Parse) when it is not a valid PNG.
-RgbImage read_png(const std::string& path);
 
 }  // namespace dbs

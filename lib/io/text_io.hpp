@@ -39,6 +39,11 @@ void write_file_bytes(const std::string& path, std::string_view bytes);
 /// The file name's extension with its dot, lowercase ("" when there is none).
 std::string lowercase_extension(const std::string& path);
 
+/// Appends the shortest text that reads back to the same double (std::to_chars: no locale).
+void append_number(std::string& out, double x);
+/// Appends the decimal digits of `x` (no locale).
+void append_integer(std::string& out, long long x);
+
 /// "PATH:LINE" for error messages.
 std::string file_line(const std::string& path, std::size_t line);
 

@@ -3,7 +3,7 @@
 #pragma once
 #include <string>
 
-#include "png_image.hpp"
+#include "rgb_image.hpp"
 
 namespace dbs {
 

@@ -7,7 +7,7 @@
 
 #include "circle_pattern.hpp"
 #include "geometry.hpp"
-#include "png_image.hpp"
+#include "rgb_image.hpp"
 #include "triangles.hpp"
 
 namespace dbs {

@@ -2,7 +2,7 @@
 // parameter domain. Where the parameterization is good the disks look round on the surface;
 // where it distorts they become ellipses of varying size.
 #pragma once
-#include "png_image.hpp"
+#include "rgb_image.hpp"
 
 namespace dbs {
 

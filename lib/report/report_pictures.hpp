@@ -8,7 +8,7 @@
 #include "distance_stats.hpp"
 #include "distortion.hpp"
 #include "geometry.hpp"
-#include "png_image.hpp"
+#include "rgb_image.hpp"
 #include "triangles.hpp"
 
 namespace dbs {

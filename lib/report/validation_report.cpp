@@ -10,15 +10,16 @@
 #include "error.hpp"
 #include "json_writer.hpp"
 #include "mesh_files.hpp"
+#include "png_file.hpp"
 #include "raster_view.hpp"
 #include "report_pictures.hpp"
 #include "suspicious_triangles.hpp"
+#include "textured_mesh.hpp"
 #include "validation_mesh.hpp"
 
 namespace dbs {
 namespace {
 
-constexpr int kTextureSize = 1024;
 constexpr int kViewWidth = 720, kViewHeight = 540;
 constexpr int kDomainSize = 560;
 constexpr int kHistogramWidth = 640, kHistogramHeight = 320;
@@ -101,7 +102,7 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   const double distance_seconds = clock.lap();
 
   const CirclePattern pattern(per_axis.summary.scale_u, per_axis.summary.scale_v);
-  write_textured_obj(base + "mesh.obj", cloud.points(), result.u, result.v, mesh.triangles, pattern.texture(kTextureSize));
+  write_textured_obj(base + "mesh.obj", cloud.points(), result.u, result.v, mesh.triangles, pattern.texture(kTexturePixels));
   write_ply_mesh(base + "mesh.ply", cloud.points(), result.u, result.v, mesh.triangles);
   const double mesh_file_seconds = clock.lap();
   write_png(base + "view.png", render_view(cloud.points(), result.u, result.v, mesh.triangles, pattern, default_view(cloud.points(), mesh.triangles), kViewWidth, kViewHeight));
