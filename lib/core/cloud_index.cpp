@@ -12,10 +12,20 @@
 
 #include "error.hpp"
 
-// near_ray() walks nanoflann's tree itself (its nodes, vAcc and root_bbox are public members);
-// their names are those of the 1.4 series.
-#if NANOFLANN_VERSION < 0x130 || NANOFLANN_VERSION >= 0x150
-#error "cloud_index.cpp expects nanoflann 1.3 or 1.4 (tree members vAcc, root_node, root_bbox)"
+// near_ray() walks nanoflann's tree itself: its public members (the permutation vAcc, the root
+// node and the root's bounding box) and the nodes' node_type.lr / node_type.sub unions and
+// child1 / child2 pointers. nanoflann 1.5 gave the three tree members a trailing underscore,
+// renamed SearchParams (whose first, ignored "checks" argument went away) to SearchParameters
+// and returns radius results as ResultItem instead of std::pair; the nodes kept their layout
+// (checked against 1.5.5 and 1.7.1). These names are the only version-dependent code of
+// libdbs, kept here; both series build the same tree (the same middle split), so near_ray,
+// radius and knn give the same points with either.
+#if !defined(NANOFLANN_VERSION) || NANOFLANN_VERSION < 0x130
+#error "cloud_index.cpp needs nanoflann 1.3 or later"
+#elif NANOFLANN_VERSION >= 0x150
+#define DBS_NANOFLANN_MEMBER(name) name##_
+#else
+#define DBS_NANOFLANN_MEMBER(name) name
 #endif
 
 namespace dbs {
@@ -39,6 +49,15 @@ struct Dataset {
 using Metric = nanoflann::L2_Simple_Adaptor<double, Dataset, double, std::uint32_t>;
 using Tree = nanoflann::KDTreeSingleIndexAdaptor<Metric, Dataset, 3, std::uint32_t>;
 constexpr std::size_t kLeafSize = 12;
+
+#if NANOFLANN_VERSION >= 0x150
+using RadiusMatch = nanoflann::ResultItem<std::uint32_t, double>;
+// exact searches (eps 0); `sorted` matters to radius searches only
+nanoflann::SearchParameters exact_search(bool sorted) { return nanoflann::SearchParameters(0.0f, sorted); }
+#else
+using RadiusMatch = std::pair<std::uint32_t, double>;
+nanoflann::SearchParams exact_search(bool sorted) { return nanoflann::SearchParams(32, 0.0f, sorted); }
+#endif
 
 /// Lower bounds over an axis-aligned box of |x - p| (the box's distance to p) and of the
 /// distance of x to the line p + s u (u unit). For the latter, any axis a perpendicular to u
@@ -90,7 +109,7 @@ struct CloudIndex::Impl {
     if (node->child1 == nullptr && node->child2 == nullptr) {
       const double bound2 = query.bound * query.bound;
       for (std::size_t i = node->node_type.lr.left; i < node->node_type.lr.right; ++i) {
-        const std::size_t index = dataset.map(tree.vAcc[i]);
+        const std::size_t index = dataset.map(tree.DBS_NANOFLANN_MEMBER(vAcc)[i]);
         const Vec3 d = points[index] - query.p;
         if (d.squaredNorm() * d.cross(query.u).squaredNorm() <= bound2) out.push_back(index);
       }
@@ -136,7 +155,7 @@ std::size_t CloudIndex::nearest(const Vec3& q) const {
   double d2 = 0.0;
   nanoflann::KNNResultSet<double, std::uint32_t> result(1);
   result.init(&k, &d2);
-  impl_->tree.findNeighbors(result, q.data(), nanoflann::SearchParams());
+  impl_->tree.findNeighbors(result, q.data(), exact_search(true));
   return impl_->dataset.map(k);
 }
 
@@ -156,8 +175,8 @@ void CloudIndex::knn(const Vec3& q, std::size_t k, std::vector<std::size_t>& out
 void CloudIndex::radius(const Vec3& q, double r, std::vector<std::size_t>& out_idx) const {
   out_idx.clear();
   if (size() == 0 || !(r >= 0.0)) return;
-  std::vector<std::pair<std::uint32_t, double>> found;
-  impl_->tree.radiusSearch(q.data(), r * r, found, nanoflann::SearchParams(32, 0.0f, false));
+  std::vector<RadiusMatch> found;
+  impl_->tree.radiusSearch(q.data(), r * r, found, exact_search(false));
   out_idx.reserve(found.size());
   for (const auto& f : found) out_idx.push_back(impl_->dataset.map(f.first));
 }
@@ -167,8 +186,9 @@ void CloudIndex::near_ray(const Vec3& p, const Vec3& n, double bound, std::vecto
   const double length = n.norm();
   if (size() == 0 || !(length > 0.0)) return;
   const RayBoxBound query{p, n / length, bound};
-  const auto& box = impl_->tree.root_bbox;
-  impl_->collect_near_ray(impl_->tree.root_node, Vec3(box[0].low, box[1].low, box[2].low), Vec3(box[0].high, box[1].high, box[2].high), query, out_idx);
+  const Tree& tree = impl_->tree;
+  const auto& box = tree.DBS_NANOFLANN_MEMBER(root_bbox);
+  impl_->collect_near_ray(tree.DBS_NANOFLANN_MEMBER(root_node), Vec3(box[0].low, box[1].low, box[2].low), Vec3(box[0].high, box[1].high, box[2].high), query, out_idx);
 }
 
 double cloud_spacing(const CloudIndex& index, std::size_t max_samples) {
