@@ -18,13 +18,92 @@
  *  - Callbacks receive the caller's `payload` as their last argument. A callback
  *    returning non-zero cancels the operation: the function returns DBS_ERR_CANCELLED,
  *    frees everything it allocated and produces no result handle.
- *  - Callbacks are always called on the thread that called dbs_parameterize(), never
- *    from a worker thread, so they need no locking of their own.
  *  - No exception, C++ type or abort() crosses this interface. The library holds no
  *    global mutable state except the per-thread last-error message.
  *  - Only fixed-width integers, double, size_t, pointers and handles appear in
  *    prototypes (no bool, no struct by value), so Fortran (bind(C)) and Python
  *    (ctypes) bindings are mechanical. Every prototype sits on one line.
+ *  - Lengths and distances are in cloud units (the unit of the input coordinates),
+ *    times in seconds of wall-clock time, counts are whole numbers (returned as double
+ *    by the *_stat functions), ratios and shares are plain numbers.
+ *  - File formats (point clouds, boundary files, result files, the dbs-param command
+ *    line) are described in docs/FORMATS.md, installed as share/doc/dbs/FORMATS.md.
+ *
+ * Statuses:
+ *
+ *  - Each function's comment lists, after "Returns", the statuses it can give besides
+ *    DBS_OK. Two more are possible from every function that returns a status and are
+ *    listed only where they are expected: DBS_ERR_NO_MEMORY (an allocation failed; even
+ *    the message of a failed argument check is allocated) and DBS_ERR_INTERNAL (a bug in
+ *    libdbs; its message starts with "internal error:"; please report it).
+ *  - The message of dbs_last_error_message() is one line of English, "function: what is
+ *    wrong", naming the argument, file and line, index or value at fault.
+ *  - Inside a run (the work dbs_parameterize does once its arguments passed their checks)
+ *    the only statuses are DBS_ERR_NO_MEMORY, DBS_ERR_CANCELLED, DBS_ERR_NUMERICAL, the
+ *    input-check statuses documented for the function (DBS_ERR_DEGENERATE for a cloud or
+ *    boundary found unusable) and DBS_ERR_INTERNAL, only for bugs: never
+ *    DBS_ERR_INVALID_ARGUMENT or DBS_ERR_OUT_OF_RANGE for arguments that passed the checks.
+ *    The same holds for the computations of dbs_mesh_create, dbs_distortion_create,
+ *    dbs_mesh_distortion and dbs_report_write.
+ *
+ * Threads:
+ *
+ *  - Any number of threads may call libdbs at once on different handles.
+ *  - A handle may be shared by any number of threads for simultaneous calls that take it
+ *    as `const` (cloud, boundary, options, result, patches view, mesh, distortion,
+ *    distances): such calls never modify it, not even a cache. For example several threads
+ *    may run dbs_parameterize on the same cloud, boundary and options at once; each gets
+ *    the result a lone call gives, bit for bit.
+ *  - Calls that must not race (the caller synchronizes): a call taking a handle non-const
+ *    (dbs_options_set_int, dbs_options_set_double, dbs_options_set_progress,
+ *    dbs_options_set_level_callback) must not run while any other call uses the same handle
+ *    (a dbs_parameterize or dbs_report_write reading those options included), and a
+ *    *_destroy must not run while any other call uses that handle or a view borrowed from
+ *    it (the dbs_patches of dbs_result_patches).
+ *  - libdbs starts worker threads (std::thread) inside a call and joins them before the
+ *    call returns: no thread outlives a call and no pool is kept. dbs_parameterize uses up
+ *    to DBS_OPT_THREADS at a time (0 = all hardware threads); with DBS_OPT_THREADS = 1 it
+ *    starts none and runs on the calling thread. dbs_report_write uses the thread count of
+ *    its options; dbs_mesh_create and dbs_distortion_create use all hardware threads.
+ *    Results never depend on the thread count.
+ *  - A worker thread that cannot be started (std::system_error, e.g. at the process's
+ *    thread limit) fails the call with DBS_ERR_INTERNAL when it is the first worker of its
+ *    step. Known defect of 0.2: when other workers of the step are already running, the
+ *    process is terminated (std::terminate). Where threads are scarce, set
+ *    DBS_OPT_THREADS to 1.
+ *
+ * Lifetimes:
+ *
+ *  - A handle lives until its *_destroy. No pointer to a caller's array, string or handle
+ *    is kept after a call returns: inputs are copied. A result does not refer to the cloud,
+ *    boundary or options it was made from, nor a mesh, distortion or distances handle to
+ *    its result or cloud, so either may be destroyed first.
+ *  - The dbs_patches view of dbs_result_patches belongs to the result and is valid while
+ *    the result lives. The `patches` view passed to the level callback and the `stage`
+ *    string passed to the progress callback are valid only during that call.
+ *  - The string of dbs_last_error_message() is valid until the next libdbs call on the same
+ *    thread (and not after the thread ends). dbs_version_string() and dbs_status_string()
+ *    return static strings, valid for ever.
+ *
+ * Callbacks (progress and level, set in the options):
+ *
+ *  - They are called on the thread that called dbs_parameterize(), never from a worker
+ *    thread, and while none of that call's workers is running, so they need no locking of
+ *    their own. Options shared by several threads call the same callback with the same
+ *    payload from each of those threads at once: then the payload needs locking.
+ *  - A callback may call any libdbs function: read the view it was given (dbs_patches_*),
+ *    query any handle, even run another dbs_parameterize. dbs_parameterize reads its
+ *    options (values and callbacks) once when it starts, so changing them from a callback
+ *    affects only later calls. A callback must not destroy the cloud or the boundary of
+ *    the running call. A libdbs call failing inside a callback sets this thread's last
+ *    error message; a failure of the run replaces it.
+ *  - A callback must return normally: no longjmp out of it and no C++ exception through
+ *    libdbs (both skip its clean-up). To stop a run, return non-zero.
+ *
+ * Versions: every function and macro group carries "\since 0.N", the version that added
+ * it; NEWS.md lists the additions of each version. Before calling a function newer than
+ * the oldest library you accept, check DBS_AT_LEAST_VERSION when compiling and
+ * dbs_version_number() when running.
  *
  * Parameter domain: S(u,v), u,v in [0,1]; S(u,0) = bottom, S(u,1) = top,
  * S(0,v) = left, S(1,v) = right. Bottom and top run in increasing u, left and right
@@ -56,6 +135,7 @@ extern "C" {
 #endif
 
 /* ---- version ------------------------------------------------------------------ */
+/* Version of this header (\since 0.1). */
 #define DBS_VERSION_MAJOR 0
 #define DBS_VERSION_MINOR 2
 #define DBS_VERSION_PATCH 0
@@ -64,21 +144,25 @@ extern "C" {
 /** Non-zero when the header is at least version maj.min.pat. */
 #define DBS_AT_LEAST_VERSION(maj, min, pat) (DBS_VERSION_NUMBER >= ((maj) * 10000 + (min) * 100 + (pat)))
 
-/** Version of the library actually loaded, as DBS_VERSION_NUMBER. */
+/** Version of the library actually loaded, as DBS_VERSION_NUMBER. Cannot fail.
+ *  \since 0.1 */
 DBS_API int32_t dbs_version_number(void);
-/** Version of the library actually loaded, "MAJOR.MINOR.PATCH"; static storage. */
+/** Version of the library actually loaded, "MAJOR.MINOR.PATCH"; static storage, never
+ *  NULL. Cannot fail. \since 0.1 */
 DBS_API const char *dbs_version_string(void);
 
-/* Optional parts of the loaded library (pinned ids) for dbs_has_feature. */
+/* Optional parts of the loaded library (pinned ids) for dbs_has_feature (\since 0.1,
+ * except where marked). */
 #define DBS_FEATURE_DRACO 0      /* Draco: clouds from .ply, .obj, .drc (dbs_cloud_load) and results to .drc (dbs_result_save) */
 #define DBS_FEATURE_VALIDATION 1 /* \since 0.2: dbs_mesh_*, dbs_distortion_*, dbs_distances_* (Qhull) */
 #define DBS_FEATURE_REPORT 2     /* \since 0.2: dbs_report_write and the textured .obj of dbs_mesh_save (libpng) */
 /** Sets *out to 1 when the loaded library was built with `feature` (DBS_FEATURE_*), else 0;
  *  DBS_ERR_OUT_OF_RANGE for an id not listed. Without a feature, the calls that need it
- *  fail with DBS_ERR_UNSUPPORTED. */
+ *  fail with DBS_ERR_UNSUPPORTED.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE. \since 0.1 */
 DBS_API int dbs_has_feature(int32_t feature, int32_t *out);
 
-/* ---- status codes (pinned: never renumbered) ------------------------------------ */
+/* ---- status codes (pinned: never renumbered; \since 0.1) ------------------------- */
 #define DBS_OK 0
 #define DBS_ERR_NULL_ARGUMENT -1     /* a required pointer argument is NULL */
 #define DBS_ERR_INVALID_ARGUMENT -2  /* an argument is malformed (wrong size, unknown id, ...) */
@@ -96,31 +180,47 @@ DBS_API int dbs_has_feature(int32_t feature, int32_t *out);
 #define DBS_ERR_INTERNAL -99         /* a bug in libdbs; please report the message */
 
 /** Short English name of a status code ("ok", "null argument", ...); static storage,
- *  never NULL ("unknown status" for codes not listed above). */
+ *  never NULL ("unknown status" for codes not listed above). Cannot fail. \since 0.1 */
 DBS_API const char *dbs_status_string(int status);
 
-/** Message of the last failed call on this thread; "" when none failed yet.
+/** Message of the last failed call on this thread; "" when none failed yet; never NULL.
  *  The string is owned by the library and stays valid until the next libdbs call
- *  on the same thread. Successful calls do not clear it. */
+ *  on the same thread. Successful calls do not clear it. Cannot fail. \since 0.1 */
 DBS_API const char *dbs_last_error_message(void);
 
-/* ---- point clouds ------------------------------------------------------------ */
+/* ---- point clouds (\since 0.1) ------------------------------------------------- */
+/** An immutable set of 3D points, in the order given. \since 0.1 */
 typedef struct dbs_cloud dbs_cloud;
 
-/** Copies `count` points from `xyz` (3*count doubles). count >= 1, all finite. */
+/** Copies `count` points from `xyz` (3*count doubles). count >= 1, all finite.
+ *  Returns DBS_ERR_NULL_ARGUMENT (xyz or out; checked before count), DBS_ERR_EMPTY
+ *  (count 0), DBS_ERR_NON_FINITE (naming the first such point), DBS_ERR_INVALID_ARGUMENT
+ *  (a count no array can have), DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_cloud_create(const double *xyz, size_t count, dbs_cloud **out);
-/** Loads .xyz/.txt (text), .ply, .obj or .drc (the extension decides); see FORMATS.md. */
+/** Loads .xyz/.txt (text), .ply, .obj or .drc (the extension, in any case, decides); see
+ *  docs/FORMATS.md. .ply, .obj and .drc need DBS_FEATURE_DRACO.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_IO (cannot open or read), DBS_ERR_PARSE (a
+ *  malformed line, header or element; the message names the file and the line or
+ *  element), DBS_ERR_NON_FINITE (a NaN or infinite coordinate), DBS_ERR_EMPTY (no
+ *  points), DBS_ERR_UNSUPPORTED (an unknown extension; .ply, .obj or .drc without Draco;
+ *  a PLY version other than 1.0), DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_cloud_load(const char *path, dbs_cloud **out);
+/** Frees the cloud; NULL is ignored. Not while another call uses it. \since 0.1 */
 DBS_API void dbs_cloud_destroy(dbs_cloud *cloud);
+/** Number of points. Returns DBS_ERR_NULL_ARGUMENT. \since 0.1 */
 DBS_API int dbs_cloud_count(const dbs_cloud *cloud, size_t *out);
-/** Axis-aligned bounding box: out_min and out_max receive 3 doubles each. */
+/** Axis-aligned bounding box: out_min and out_max receive 3 doubles each (cloud units).
+ *  Returns DBS_ERR_NULL_ARGUMENT. \since 0.1 */
 DBS_API int dbs_cloud_bounds(const dbs_cloud *cloud, double *out_min, double *out_max);
-/** Copies all points into `out_xyz`, which holds `capacity` points. */
+/** Copies all points into `out_xyz`, which holds `capacity` points.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_cloud_points(const dbs_cloud *cloud, double *out_xyz, size_t capacity);
 
-/* ---- boundaries ---------------------------------------------------------------- */
+/* ---- boundaries (\since 0.1) --------------------------------------------------- */
+/** Four boundary curves (polylines), immutable. \since 0.1 */
 typedef struct dbs_boundary dbs_boundary;
 
+/* Side ids (pinned; \since 0.1). */
 #define DBS_SIDE_BOTTOM 0
 #define DBS_SIDE_RIGHT 1
 #define DBS_SIDE_TOP 2
@@ -129,20 +229,35 @@ typedef struct dbs_boundary dbs_boundary;
 /** Four polylines (each >= 2 finite points) with the corner conventions above.
  *  Corners may miss each other by at most 1e-6 of the boundary's bounding-box diagonal;
  *  they are then made to coincide exactly. Larger misses, zero-length sides and a
- *  boundary of zero area are DBS_ERR_DEGENERATE. */
+ *  boundary of zero area are DBS_ERR_DEGENERATE.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (a side with fewer than 2
+ *  points), DBS_ERR_NON_FINITE, DBS_ERR_DEGENERATE (corners apart, a side of zero length or
+ *  shorter than the corner tolerance, all points coincident, (almost) no area),
+ *  DBS_ERR_OUT_OF_RANGE (coordinates so large that the boundary's size overflows),
+ *  DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_boundary_create(const double *bottom, size_t n_bottom, const double *right, size_t n_right, const double *top, size_t n_top, const double *left, size_t n_left, dbs_boundary **out);
-/** Loads a boundary file (FORMATS.md: sections bottom/right/top/left). */
+/** Loads a boundary file (docs/FORMATS.md: sections bottom, right, top, left), then checks
+ *  it as dbs_boundary_create does (messages prefixed with the file name).
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_IO, DBS_ERR_PARSE (a malformed line, an unknown,
+ *  repeated or missing section, a section with fewer than 2 points), DBS_ERR_NON_FINITE,
+ *  DBS_ERR_EMPTY (no section at all), DBS_ERR_DEGENERATE, DBS_ERR_OUT_OF_RANGE (as
+ *  dbs_boundary_create), DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_boundary_load(const char *path, dbs_boundary **out);
+/** Frees the boundary; NULL is ignored. Not while another call uses it. \since 0.1 */
 DBS_API void dbs_boundary_destroy(dbs_boundary *boundary);
-/** Number of points of one side (DBS_SIDE_*). */
+/** Number of points of one side (DBS_SIDE_*).
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (side). \since 0.1 */
 DBS_API int dbs_boundary_side_count(const dbs_boundary *boundary, int32_t side, size_t *out);
-/** Copies one side's points into `out_xyz`, which holds `capacity` points. */
+/** Copies one side's points into `out_xyz`, which holds `capacity` points.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (side), DBS_ERR_BUFFER_TOO_SMALL.
+ *  \since 0.1 */
 DBS_API int dbs_boundary_side_points(const dbs_boundary *boundary, int32_t side, double *out_xyz, size_t capacity);
 
-/* ---- options ------------------------------------------------------------------ */
+/* ---- options (\since 0.1) ------------------------------------------------------ */
+/** The settings of a run and its callbacks. \since 0.1 */
 typedef struct dbs_options dbs_options;
 
-/* Option ids (pinned). Each comment: type, default, range. The typed setters and getters
+/* Option ids (pinned; \since 0.1). Each comment: type, default, range. The typed setters and getters
  * refuse an option of the other type (DBS_ERR_INVALID_ARGUMENT). Because of the two cross
  * rules (initial grid <= max grid, own <= near), order matters: raise DBS_OPT_MAX_GRID before
  * setting DBS_OPT_INITIAL_GRID above it. */
@@ -157,151 +272,256 @@ typedef struct dbs_options dbs_options;
 #define DBS_OPT_SUBCLOUD_NEAR 8     /* double; 0.25; (0, 10]. A4.3 "near" limit, fraction of the diagonal of the child's bounding box in the frame of its corners. */
 #define DBS_OPT_SUBCLOUD_OWN 9      /* double; 0.05; [0, 10], <= near. A4.4 "own" limit, fraction of the child's diagonal. */
 
+/* Solvers for DBS_OPT_SOLVER (pinned; \since 0.1). */
 #define DBS_SOLVER_LINEAR 0 /* banded linear least squares (always available) */
 #define DBS_SOLVER_CERES 1  /* Ceres refinement: DBS_ERR_UNSUPPORTED until it is implemented */
 
 /** Progress: `fraction` rises monotonically in [0,1] and the last call has exactly 1.0;
- *  `stage` names the running stage ("index", "evolve", "subdivide", "parameterize", "done").
- *  Return 0 to go on, non-zero to cancel. */
+ *  `stage` names the running stage ("index", "evolve", "subdivide", "parameterize", "done");
+ *  the string is valid only during the call. Called on the thread that called
+ *  dbs_parameterize (see "Callbacks" above); must return normally.
+ *  Return 0 to go on, non-zero to cancel (dbs_parameterize returns DBS_ERR_CANCELLED).
+ *  \since 0.1 */
 typedef int (*dbs_progress_fn)(double fraction, const char *stage, void *payload);
 
 /** A read-only view of a set of base-surface patches (one quadtree level in the level
- *  callback, the whole quadtree in a result); read with the dbs_patches_* functions. */
+ *  callback, the whole quadtree in a result); read with the dbs_patches_* functions.
+ *  Owned by libdbs, never destroyed by the caller. \since 0.1 */
 typedef struct dbs_patches dbs_patches;
 
-/** Called once per finished quadtree level (0 = the root) with that level's patches.
- *  `patches` is valid only during the call. Return 0 to go on, non-zero to cancel. */
+/** Called once per finished quadtree level (0 = the root) with that level's patches,
+ *  after they were evolved and those that missed the target were subdivided (so
+ *  dbs_patches_is_leaf tells which were split; ids are those of the result).
+ *  `patches` is valid only during the call. Called on the thread that called
+ *  dbs_parameterize; may call any libdbs function; must return normally.
+ *  Return 0 to go on, non-zero to cancel (dbs_parameterize returns DBS_ERR_CANCELLED).
+ *  \since 0.1 */
 typedef int (*dbs_level_fn)(int32_t level, const dbs_patches *patches, void *payload);
 
+/** New options with every default and no callbacks.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_options_create(dbs_options **out);
+/** A copy of `options`: values, callbacks and their payloads.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_options_clone(const dbs_options *options, dbs_options **out);
+/** Frees the options; NULL is ignored. Not while another call uses them. \since 0.1 */
 DBS_API void dbs_options_destroy(dbs_options *options);
-/** Integer options (DBS_OPT_MAX_LEVEL, _INITIAL_GRID, _MAX_GRID, _SOLVER, _THREADS). */
+/** Integer options (DBS_OPT_MAX_LEVEL, _INITIAL_GRID, _MAX_GRID, _SOLVER, _THREADS).
+ *  Modifies `options`: must not race with any other use of them.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (an unknown id or a real
+ *  option), DBS_ERR_OUT_OF_RANGE (outside the range, or breaking a cross rule),
+ *  DBS_ERR_UNSUPPORTED (DBS_SOLVER_CERES). \since 0.1 */
 DBS_API int dbs_options_set_int(dbs_options *options, int32_t option, int32_t value);
+/** Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (an unknown id or a real
+ *  option). \since 0.1 */
 DBS_API int dbs_options_get_int(const dbs_options *options, int32_t option, int32_t *out);
-/** Real options (DBS_OPT_ACCURACY, _RELATIVE_ACCURACY, _SMOOTHING, _SUBCLOUD_NEAR, _SUBCLOUD_OWN). */
+/** Real options (DBS_OPT_ACCURACY, _RELATIVE_ACCURACY, _SMOOTHING, _SUBCLOUD_NEAR, _SUBCLOUD_OWN).
+ *  Modifies `options`: must not race with any other use of them.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (an unknown id or an integer
+ *  option), DBS_ERR_NON_FINITE, DBS_ERR_OUT_OF_RANGE (outside the range, or breaking a
+ *  cross rule). \since 0.1 */
 DBS_API int dbs_options_set_double(dbs_options *options, int32_t option, double value);
+/** Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (an unknown id or an integer
+ *  option). \since 0.1 */
 DBS_API int dbs_options_get_double(const dbs_options *options, int32_t option, double *out);
 /** Documented range of any option (integer options report theirs as doubles). An open end
  *  is reported as its limit (DBS_OPT_SUBCLOUD_NEAR: min 0, which itself is refused) and a
- *  missing upper end as DBL_MAX (DBS_OPT_ACCURACY). */
+ *  missing upper end as DBL_MAX (DBS_OPT_ACCURACY).
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (an unknown id). \since 0.1 */
 DBS_API int dbs_option_bounds(int32_t option, double *out_min, double *out_max);
-/** Sets (or with fn == NULL clears) the progress callback. */
+/** Sets (or with fn == NULL clears) the progress callback; `payload` is passed to it as
+ *  given (never dereferenced by libdbs). Modifies `options`: must not race with any other
+ *  use of them. Returns DBS_ERR_NULL_ARGUMENT. \since 0.1 */
 DBS_API int dbs_options_set_progress(dbs_options *options, dbs_progress_fn fn, void *payload);
-/** Sets (or with fn == NULL clears) the per-level inspection callback. */
+/** Sets (or with fn == NULL clears) the per-level inspection callback; `payload` as for
+ *  dbs_options_set_progress. Modifies `options`: must not race with any other use of them.
+ *  Returns DBS_ERR_NULL_ARGUMENT. \since 0.1 */
 DBS_API int dbs_options_set_level_callback(dbs_options *options, dbs_level_fn fn, void *payload);
 
-/* ---- parameterization ------------------------------------------------------------ */
+/* ---- parameterization (\since 0.1) --------------------------------------------- */
+/** The outcome of a run: per-point parameters, the patch quadtree, statistics. Immutable;
+ *  independent of the cloud, boundary and options it was made from. \since 0.1 */
 typedef struct dbs_result dbs_result;
 
-/** Parameterizes `cloud` inside `boundary`. `options` may be NULL for the defaults. */
+/** Parameterizes `cloud` inside `boundary`. `options` may be NULL for the defaults; they
+ *  are read once, when the call starts. Starts worker threads (see "Threads" above) and
+ *  calls the callbacks of `options` on the calling thread. On failure *out is untouched
+ *  and nothing is left allocated.
+ *  Returns DBS_ERR_NULL_ARGUMENT (cloud, boundary or out), DBS_ERR_DEGENERATE (the cloud or
+ *  boundary found unusable: all points coincide, fewer than two distinct points, a zero
+ *  direction or a middle curve of zero length met while projecting or subdividing),
+ *  DBS_ERR_NUMERICAL (a projection system singular or without finite solution),
+ *  DBS_ERR_CANCELLED (a callback returned non-zero), DBS_ERR_NO_MEMORY, DBS_ERR_INTERNAL
+ *  (a bug; also a worker thread that could not be started, see "Threads"). \since 0.1 */
 DBS_API int dbs_parameterize(const dbs_cloud *cloud, const dbs_boundary *boundary, const dbs_options *options, dbs_result **out);
+/** Frees the result and its dbs_patches view; NULL is ignored. Not while another call uses
+ *  the result or its view. \since 0.1 */
 DBS_API void dbs_result_destroy(dbs_result *result);
 
-/** Number of parameterized points (equals the cloud's count, input order kept). */
+/** Number of parameterized points (equals the cloud's count, input order kept).
+ *  Returns DBS_ERR_NULL_ARGUMENT. \since 0.1 */
 DBS_API int dbs_result_point_count(const dbs_result *result, size_t *out);
-/** u0 v0 u1 v1 ... into `out_uv`, which holds `capacity` pairs. */
+/** u0 v0 u1 v1 ... into `out_uv`, which holds `capacity` pairs; each in [0,1].
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_result_uv(const dbs_result *result, double *out_uv, size_t capacity);
-/** Distance of each point to the base surface. */
+/** Distance of each point to the base surface (>= 0, cloud units); `capacity` in values.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_result_distances(const dbs_result *result, double *out, size_t capacity);
-/** Id of the leaf patch that parameterized each point (an index for dbs_patches_*). */
+/** Id of the leaf patch that parameterized each point (an index for dbs_patches_* on the
+ *  view of dbs_result_patches); `capacity` in values.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_result_point_patches(const dbs_result *result, int32_t *out, size_t capacity);
-/** Quadtree level of that leaf for each point. */
+/** Quadtree level of that leaf for each point (0 = the root); `capacity` in values.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_result_point_levels(const dbs_result *result, int32_t *out, size_t capacity);
 
-/** Point (and, if out_normal is not NULL, unit normal) of the base surface at (u,v) in [0,1]^2. */
+/** Point (and, if out_normal is not NULL, unit normal) of the base surface at (u,v) in [0,1]^2;
+ *  3 doubles each. A (u,v) on a seam between leaves is evaluated on the leaf with the
+ *  larger u and v (the seams are C0, so the point agrees).
+ *  Returns DBS_ERR_NULL_ARGUMENT (result or out_xyz), DBS_ERR_NON_FINITE (u or v),
+ *  DBS_ERR_OUT_OF_RANGE (u or v outside [0,1]), DBS_ERR_NUMERICAL (a normal was asked
+ *  where the surface has none, e.g. a collapsed patch). \since 0.1 */
 DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, double *out_xyz, double *out_normal);
 
-/* Summary statistics (pinned ids) for dbs_result_stat. */
-#define DBS_STAT_MEAN_DISTANCE 0 /* mean point-to-surface distance */
-#define DBS_STAT_MAX_DISTANCE 1
-#define DBS_STAT_RMS_DISTANCE 2
+/* Summary statistics (pinned ids; \since 0.1) for dbs_result_stat, each with its unit. */
+#define DBS_STAT_MEAN_DISTANCE 0 /* mean point-to-surface distance over all points, cloud units */
+#define DBS_STAT_MAX_DISTANCE 1  /* largest point-to-surface distance, cloud units */
+#define DBS_STAT_RMS_DISTANCE 2  /* root mean square of the point-to-surface distances, cloud units */
 #define DBS_STAT_ACCURACY 3      /* the mean-distance target that was used, in cloud units */
 #define DBS_STAT_ACCURACY_MET 4  /* 1 when every leaf met the target, else 0 */
-#define DBS_STAT_LEVELS 5        /* number of quadtree levels (1 = root only) */
-#define DBS_STAT_PATCHES 6       /* number of patches in the quadtree */
-#define DBS_STAT_LEAVES 7        /* number of leaf patches */
-#define DBS_STAT_ITERATIONS 8    /* grid evolutions over all patches */
-#define DBS_STAT_SECONDS 9       /* wall-clock time of dbs_parameterize */
-#define DBS_STAT_LENGTH_SCALE 10 /* the cloud's length scale h (mean nearest-neighbour spacing) */
-#define DBS_STAT_SECONDS_INDEX 11        /* wall-clock time spent indexing the cloud */
-#define DBS_STAT_SECONDS_EVOLVE 12       /* ... evolving base surfaces (all levels) */
-#define DBS_STAT_SECONDS_SUBDIVIDE 13    /* ... subdividing patches and splitting subclouds */
-#define DBS_STAT_SECONDS_PARAMETERIZE 14 /* ... projecting every point onto its leaves (A2) */
+#define DBS_STAT_LEVELS 5        /* number of quadtree levels (1 = root only), a count */
+#define DBS_STAT_PATCHES 6       /* number of patches in the quadtree, a count */
+#define DBS_STAT_LEAVES 7        /* number of leaf patches, a count */
+#define DBS_STAT_ITERATIONS 8    /* grid evolutions over all patches, a count */
+#define DBS_STAT_SECONDS 9       /* wall-clock time of dbs_parameterize, seconds */
+#define DBS_STAT_LENGTH_SCALE 10 /* the cloud's length scale h (mean nearest-neighbour spacing), cloud units */
+#define DBS_STAT_SECONDS_INDEX 11        /* wall-clock time spent indexing the cloud, seconds */
+#define DBS_STAT_SECONDS_EVOLVE 12       /* ... evolving base surfaces (all levels), seconds */
+#define DBS_STAT_SECONDS_SUBDIVIDE 13    /* ... subdividing patches and splitting subclouds, seconds */
+#define DBS_STAT_SECONDS_PARAMETERIZE 14 /* ... projecting every point onto its leaves (A2), seconds */
+/** One summary statistic (DBS_STAT_*) of the result, in the unit given beside its id.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (stat). \since 0.1 */
 DBS_API int dbs_result_stat(const dbs_result *result, int32_t stat, double *out);
 
-/** The result's quadtree: all patches, indexed by patch id; valid while `result` lives. */
+/** The result's quadtree: all patches, indexed by patch id; valid while `result` lives
+ *  (owned by the result: do not destroy it). Returns DBS_ERR_NULL_ARGUMENT. \since 0.1 */
 DBS_API int dbs_result_patches(const dbs_result *result, const dbs_patches **out);
 
-/** Writes .csv, .ply or .drc (the extension decides; FORMATS.md). `cloud` is the cloud
- *  that was parameterized (its points are written in .ply and .drc). */
+/** Writes .csv, .ply or .drc (the extension, in any case, decides; docs/FORMATS.md).
+ *  `cloud` is the cloud that was parameterized (its points are written in .ply and .drc).
+ *  An existing file is replaced. .drc needs DBS_FEATURE_DRACO.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (the cloud's point count differs
+ *  from the result's), DBS_ERR_UNSUPPORTED (an unknown extension; .drc without Draco),
+ *  DBS_ERR_IO (cannot create or write the file), DBS_ERR_OUT_OF_RANGE (.drc: a coordinate
+ *  beyond the 32-bit float range), DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_result_save(const dbs_result *result, const dbs_cloud *cloud, const char *path);
 
-/* ---- patches ---------------------------------------------------------------------- */
+/* ---- patches (\since 0.1) ------------------------------------------------------- */
+/* Every dbs_patches_* function reads the i-th patch of a view (0 <= i < count) and
+ * returns DBS_ERR_NULL_ARGUMENT for a NULL pointer and DBS_ERR_OUT_OF_RANGE for an i
+ * outside the view; the view may be read by many threads at once. */
+/** Number of patches in the view. Returns DBS_ERR_NULL_ARGUMENT. \since 0.1 */
 DBS_API int dbs_patches_count(const dbs_patches *patches, size_t *out);
-/** Patch id (the index used by dbs_result_point_patches) of the i-th patch of the view. */
+/** Patch id (the index used by dbs_result_point_patches) of the i-th patch of the view.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE. \since 0.1 */
 DBS_API int dbs_patches_id(const dbs_patches *patches, size_t i, int32_t *out);
+/** Quadtree level of the patch (0 = the root).
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE. \since 0.1 */
 DBS_API int dbs_patches_level(const dbs_patches *patches, size_t i, int32_t *out);
-/** 1 for a leaf, 0 for a patch that was subdivided. */
+/** 1 for a leaf, 0 for a patch that was subdivided.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE. \since 0.1 */
 DBS_API int dbs_patches_is_leaf(const dbs_patches *patches, size_t i, int32_t *out);
-/** Id of the parent patch, -1 for the root. */
+/** Id of the parent patch, -1 for the root.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE. \since 0.1 */
 DBS_API int dbs_patches_parent(const dbs_patches *patches, size_t i, int32_t *out);
-/** The patch's rectangle of the global domain: u0 v0 u1 v1 into out_rect (4 doubles). */
+/** The patch's rectangle of the global domain: u0 v0 u1 v1 into out_rect (4 doubles).
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE. \since 0.1 */
 DBS_API int dbs_patches_rect(const dbs_patches *patches, size_t i, double *out_rect);
-/** Grid size: points along u and along v. */
+/** Grid size: points along u and along v.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE. \since 0.1 */
 DBS_API int dbs_patches_grid_size(const dbs_patches *patches, size_t i, int32_t *out_nu, int32_t *out_nv);
-/** Grid points, u fastest: point (iu, iv) at index iv*nu + iu; `capacity` in points. */
+/** Grid points, u fastest: point (iu, iv) at index iv*nu + iu; `capacity` in points.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_patches_grid_points(const dbs_patches *patches, size_t i, double *out_xyz, size_t capacity);
+/** Number of points of one side (DBS_SIDE_*) of the patch's own boundary.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (i or side). \since 0.1 */
 DBS_API int dbs_patches_boundary_count(const dbs_patches *patches, size_t i, int32_t side, size_t *out);
+/** That side's points into `out_xyz`, which holds `capacity` points.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (i or side), DBS_ERR_BUFFER_TOO_SMALL.
+ *  \since 0.1 */
 DBS_API int dbs_patches_boundary_points(const dbs_patches *patches, size_t i, int32_t side, double *out_xyz, size_t capacity);
-/** Points of the patch's subcloud, their mean and max distance to the patch, grid evolutions. */
+/** Points of the patch's subcloud (a count), their mean and max distance to the patch
+ *  (cloud units), grid evolutions (a count).
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE. \since 0.1 */
 DBS_API int dbs_patches_stats(const dbs_patches *patches, size_t i, size_t *out_points, double *out_mean, double *out_max, int32_t *out_iterations);
 
-/* ---- validation ------------------------------------------------------------------- */
+/* ---- validation (\since 0.1) ---------------------------------------------------- */
 /* The four judgements of a parameterization of the paper's section 7, as numbers and files:
  * (a) a mesh of the cloud from the 2D Delaunay triangulation of its (u,v), with the triangles
  * that bridge across the surface flagged; (b) how much each triangle is distorted between 3D
  * and (u,v); (c) a texture of black disks mapped through (u,v) (dbs_mesh_save and the
- * report); (d) the point-to-surface distances, per leaf patch and overall. */
+ * report); (d) the point-to-surface distances, per leaf patch and overall.
+ * Every function of this section is exported in every build; in a library built without
+ * DBS_FEATURE_VALIDATION each one (but the *_destroy functions, which accept NULL) returns
+ * DBS_ERR_UNSUPPORTED, which the lists below therefore do not repeat. A mesh, distortion or
+ * distances handle owns copies of what it needs: its result and cloud may be destroyed
+ * first. */
+/** The Delaunay mesh of a result's (u,v) over its cloud. \since 0.1 */
 typedef struct dbs_mesh dbs_mesh;
 
 /** A triangle is suspicious when one of its 3D edges is longer than this many times the
  *  local spacing of both its end points (a point's distance to its 6th nearest other point):
  *  the mesh bridges across the surface, or along a ragged outline of the cloud. */
-#define DBS_MESH_SUSPICIOUS_FACTOR 4.0
+#define DBS_MESH_SUSPICIOUS_FACTOR 4.0 /* \since 0.1 */
 
 /** Triangulates the result's (u,v) in the plane (2D Delaunay, Qhull) and takes the triangles
  *  over `cloud`, the cloud that was parameterized: vertex i is cloud point i. Triangles are
  *  counter-clockwise in (u,v); a point whose (u,v) coincides with another's is the vertex of
  *  no triangle. DBS_ERR_INVALID_ARGUMENT when the cloud's size differs from the result's,
- *  DBS_ERR_DEGENERATE when the (u,v) do not span the plane. */
+ *  DBS_ERR_DEGENERATE when the (u,v) do not span the plane. Uses all hardware threads.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (the cloud's size differs from
+ *  the result's; more than INT32_MAX points), DBS_ERR_DEGENERATE (fewer than 3 distinct
+ *  (u,v), or all on one line), DBS_ERR_NUMERICAL (Qhull failed; no surface normal at a
+ *  triangle's centre), DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_mesh_create(const dbs_result *result, const dbs_cloud *cloud, dbs_mesh **out);
+/** Frees the mesh; NULL is ignored. Not while another call uses it. \since 0.1 */
 DBS_API void dbs_mesh_destroy(dbs_mesh *mesh);
-/** Number of vertices (the cloud's point count). */
+/** Number of vertices (the cloud's point count). Returns DBS_ERR_NULL_ARGUMENT. \since 0.1 */
 DBS_API int dbs_mesh_vertex_count(const dbs_mesh *mesh, size_t *out);
-/** Vertex positions (the cloud's points) into `out_xyz`, which holds `capacity` points. */
+/** Vertex positions (the cloud's points) into `out_xyz`, which holds `capacity` points.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_mesh_vertices(const dbs_mesh *mesh, double *out_xyz, size_t capacity);
-/** Vertex parameters u0 v0 u1 v1 ... into `out_uv`, which holds `capacity` pairs. */
+/** Vertex parameters u0 v0 u1 v1 ... into `out_uv`, which holds `capacity` pairs.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_mesh_uv(const dbs_mesh *mesh, double *out_uv, size_t capacity);
+/** Number of triangles. Returns DBS_ERR_NULL_ARGUMENT. \since 0.1 */
 DBS_API int dbs_mesh_triangle_count(const dbs_mesh *mesh, size_t *out);
-/** Vertex indices a0 b0 c0 a1 b1 c1 ... into `out`, which holds `capacity` triangles. */
+/** Vertex indices a0 b0 c0 a1 b1 c1 ... into `out`, which holds `capacity` triangles.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_mesh_triangles(const dbs_mesh *mesh, int32_t *out, size_t capacity);
+/** Number of suspicious triangles. Returns DBS_ERR_NULL_ARGUMENT. \since 0.1 */
 DBS_API int dbs_mesh_suspicious_count(const dbs_mesh *mesh, size_t *out);
-/** Indices (ascending) of the suspicious triangles into `out`, which holds `capacity` values. */
+/** Indices (ascending) of the suspicious triangles into `out`, which holds `capacity` values.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_mesh_suspicious(const dbs_mesh *mesh, int32_t *out, size_t capacity);
 /** Writes the mesh by extension: .obj with vt = (u,v), plus STEM.mtl and the disk texture
  *  STEM_texture.png beside it (so any viewer shows method (c)); or binary .ply with float
- *  x y z u v per vertex. Other extensions are DBS_ERR_UNSUPPORTED. */
+ *  x y z u v per vertex. Other extensions are DBS_ERR_UNSUPPORTED. Existing files are
+ *  replaced; see docs/FORMATS.md.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_UNSUPPORTED (another extension; .obj without
+ *  DBS_FEATURE_REPORT), DBS_ERR_IO (cannot create or write a file), DBS_ERR_NO_MEMORY.
+ *  \since 0.1 */
 DBS_API int dbs_mesh_save(const dbs_mesh *mesh, const char *path);
 
+/** Distortion measures of a mesh's triangles. \since 0.1 */
 typedef struct dbs_distortion dbs_distortion;
 
-/* How the (u,v) domain is scaled before triangles are compared (pinned). Both end with the
+/* How the (u,v) domain is scaled before triangles are compared (pinned; \since 0.1). Both end with the
  * total (u,v) area of the measured triangles equal to their total 3D area. */
 #define DBS_SCALING_UNIFORM 0  /* u and v alike: [0,1]^2's aspect ratio counts as distortion */
 #define DBS_SCALING_PER_AXIS 1 /* u and v first by the surface's typical (3D-area-weighted median) speed along each */
 
-/* Per-triangle measures (pinned). J maps the 3D triangle (in its plane) to its scaled (u,v)
+/* Per-triangle measures (pinned; \since 0.1): 0-6 dimensionless ratios, 7-8 flags. J maps the 3D triangle (in its plane) to its scaled (u,v)
  * image; sigma1 >= sigma2 are its singular values. Degenerate triangles (zero area in 3D or
  * in (u,v)) have NaN for measures 0-6 and are in no summary. */
 #define DBS_MEASURE_CONFORMAL 0       /* sigma1 / sigma2 >= 1; 1 = angles kept */
@@ -314,56 +534,73 @@ typedef struct dbs_distortion dbs_distortion;
 #define DBS_MEASURE_FOLDED 7     /* 1 when folded (orientation against the majority), else 0 */
 #define DBS_MEASURE_DEGENERATE 8 /* 1 when degenerate, else 0 */
 
-/* Summary statistics of a measure over the non-degenerate triangles (pinned). */
+/* Summary statistics of a measure over the non-degenerate triangles (pinned; \since 0.1),
+ * in the measure's own unit. */
 #define DBS_SUMMARY_MIN 0
 #define DBS_SUMMARY_MEAN 1
 #define DBS_SUMMARY_P95 2 /* 95th percentile, interpolated between order statistics */
 #define DBS_SUMMARY_MAX 3
 
-/* Whole-mesh figures for dbs_distortion_stat (pinned). */
-#define DBS_DISTORTION_TRIANGLES 0       /* measured triangles */
-#define DBS_DISTORTION_DEGENERATE 1      /* degenerate triangles */
-#define DBS_DISTORTION_FOLDED 2          /* folded triangles */
-#define DBS_DISTORTION_SCALE_U 3         /* the scaling applied to u */
-#define DBS_DISTORTION_SCALE_V 4         /* the scaling applied to v */
+/* Whole-mesh figures for dbs_distortion_stat (pinned; \since 0.1). */
+#define DBS_DISTORTION_TRIANGLES 0       /* measured triangles, a count */
+#define DBS_DISTORTION_DEGENERATE 1      /* degenerate triangles, a count */
+#define DBS_DISTORTION_FOLDED 2          /* folded triangles, a count */
+#define DBS_DISTORTION_SCALE_U 3         /* the scaling applied to u (u' = scale * u), cloud units per unit of u */
+#define DBS_DISTORTION_SCALE_V 4         /* the scaling applied to v, cloud units per unit of v */
 #define DBS_DISTORTION_MESH_STRETCH_L2 5 /* Sander's L2 stretch of the mesh (3D-area-weighted RMS); 1 = isometric */
 
 /** Distortion of the Delaunay mesh. A triangle is folded when the sign of det J times the
  *  sign of its 3D normal against the base surface's normal differs from the majority's, so
- *  a fold of the parameterization shows although every Delaunay triangle turns the same way in (u,v). */
+ *  a fold of the parameterization shows although every Delaunay triangle turns the same way in (u,v).
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (scaling), DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_mesh_distortion(const dbs_mesh *mesh, int32_t scaling, dbs_distortion **out);
 /** Distortion of the caller's mesh over the parameterized cloud: `triangles` holds
  *  3*n_triangles vertex indices into the cloud (NULL allowed when n_triangles is 0); folds
- *  judged as in dbs_mesh_distortion, so a mesh of either orientation works. */
+ *  judged as in dbs_mesh_distortion, so a mesh of either orientation works. Uses all
+ *  hardware threads.
+ *  Returns DBS_ERR_NULL_ARGUMENT (triangles only when n_triangles > 0), DBS_ERR_OUT_OF_RANGE
+ *  (scaling; a vertex index outside the cloud), DBS_ERR_INVALID_ARGUMENT (the cloud's size
+ *  differs from the result's; a triangle count no array can have), DBS_ERR_NUMERICAL (no
+ *  surface normal at a triangle's centre), DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_distortion_create(const dbs_result *result, const dbs_cloud *cloud, const int32_t *triangles, size_t n_triangles, int32_t scaling, dbs_distortion **out);
+/** Frees the distortion; NULL is ignored. Not while another call uses it. \since 0.1 */
 DBS_API void dbs_distortion_destroy(dbs_distortion *distortion);
-/** A whole-mesh figure (DBS_DISTORTION_*). */
+/** A whole-mesh figure (DBS_DISTORTION_*), in the unit given beside its id.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (stat). \since 0.1 */
 DBS_API int dbs_distortion_stat(const dbs_distortion *distortion, int32_t stat, double *out);
-/** A summary (DBS_SUMMARY_*) of a measure (DBS_MEASURE_CONFORMAL .. DBS_MEASURE_SIGMA2); 0 when no triangle counts. */
+/** A summary (DBS_SUMMARY_*) of a measure (DBS_MEASURE_CONFORMAL .. DBS_MEASURE_SIGMA2); 0 when no triangle counts.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (measure or summary). \since 0.1 */
 DBS_API int dbs_distortion_summary(const dbs_distortion *distortion, int32_t measure, int32_t summary, double *out);
-/** One measure (DBS_MEASURE_*) per triangle, in triangle order, into `out`, which holds `capacity` values. */
+/** One measure (DBS_MEASURE_*) per triangle, in triangle order, into `out`, which holds `capacity` values.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (measure), DBS_ERR_BUFFER_TOO_SMALL.
+ *  \since 0.1 */
 DBS_API int dbs_distortion_values(const dbs_distortion *distortion, int32_t measure, double *out, size_t capacity);
 
+/** Statistics of a result's point-to-surface distances. \since 0.1 */
 typedef struct dbs_distances dbs_distances;
 
-/* Distance statistics (pinned ids) for dbs_distances_stat. */
-#define DBS_DISTANCES_COUNT 0
-#define DBS_DISTANCES_MEAN 1
-#define DBS_DISTANCES_RMS 2
-#define DBS_DISTANCES_MAX 3
-#define DBS_DISTANCES_P50 4 /* percentiles interpolated between order statistics */
+/* Distance statistics (pinned ids; \since 0.1) for dbs_distances_stat. */
+#define DBS_DISTANCES_COUNT 0     /* points counted, a count */
+#define DBS_DISTANCES_MEAN 1      /* mean distance, cloud units */
+#define DBS_DISTANCES_RMS 2       /* root mean square distance, cloud units */
+#define DBS_DISTANCES_MAX 3       /* largest distance, cloud units */
+#define DBS_DISTANCES_P50 4 /* percentiles interpolated between order statistics, cloud units */
 #define DBS_DISTANCES_P90 5
 #define DBS_DISTANCES_P95 6
 #define DBS_DISTANCES_P99 7
 #define DBS_DISTANCES_WITHIN 8    /* share of the points with distance <= tolerance, in [0,1] */
-#define DBS_DISTANCES_TOLERANCE 9 /* the tolerance used */
+#define DBS_DISTANCES_TOLERANCE 9 /* the tolerance used, cloud units */
 
 /** Statistics of the point-to-surface distances of a result, overall and per patch.
- *  `tolerance` >= 0 in cloud units; 0 = the result's accuracy target (DBS_STAT_ACCURACY). */
+ *  `tolerance` >= 0 in cloud units; 0 = the result's accuracy target (DBS_STAT_ACCURACY).
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_NON_FINITE (tolerance), DBS_ERR_OUT_OF_RANGE
+ *  (a negative tolerance), DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_distances_create(const dbs_result *result, double tolerance, dbs_distances **out);
+/** Frees the statistics; NULL is ignored. Not while another call uses them. \since 0.1 */
 DBS_API void dbs_distances_destroy(dbs_distances *distances);
 /** A statistic (DBS_DISTANCES_*) over all points (patch = -1) or over the points a patch
- *  parameterized (a patch id; 0 points and all statistics 0 for a patch that is no leaf). */
+ *  parameterized (a patch id; 0 points and all statistics 0 for a patch that is no leaf).
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (patch or stat). \since 0.1 */
 DBS_API int dbs_distances_stat(const dbs_distances *distances, int32_t patch, int32_t stat, double *out);
 
 /** Writes a validation report into `dir` (created if missing): mesh.obj + mesh.mtl +
@@ -372,7 +609,14 @@ DBS_API int dbs_distances_stat(const dbs_distances *distances, int32_t patch, in
  *  distortion, suspicious and folded ones marked), distances.png (histogram) and
  *  summary.json (options, timings, quadtree, patches, distances, mesh, distortion for both
  *  scalings). `options` are those the result was made with (NULL: the defaults); the
- *  distance tolerance is the result's accuracy target. */
+ *  distance tolerance is the result's accuracy target. Uses the thread count of `options`.
+ *  Existing files are replaced; on failure some files may already be written. The files
+ *  are described in docs/FORMATS.md. Needs DBS_FEATURE_REPORT.
+ *  Returns DBS_ERR_NULL_ARGUMENT (result, cloud or dir), DBS_ERR_INVALID_ARGUMENT (the
+ *  cloud's size differs from the result's), DBS_ERR_DEGENERATE, DBS_ERR_NUMERICAL (as
+ *  dbs_mesh_create), DBS_ERR_IO (cannot create the directory or write a file),
+ *  DBS_ERR_UNSUPPORTED (built without the report or the validation), DBS_ERR_NO_MEMORY.
+ *  \since 0.1 */
 DBS_API int dbs_report_write(const dbs_result *result, const dbs_cloud *cloud, const dbs_options *options, const char *dir);
 
 #ifdef __cplusplus
