@@ -8,6 +8,13 @@
 
 namespace dbs {
 
+namespace {
+
+/// Grid projections at one grid size while the pleat guard keeps damping some nodes.
+constexpr int kMaxDampedSteps = 4;
+
+}  // namespace
+
 void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean, double& out_max) {
   stride = std::max<std::size_t>(stride, 1);
   const std::size_t count = (indices.size() + stride - 1) / stride;
@@ -29,6 +36,7 @@ void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& poin
 void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedProjector& projector, const EvolveSettings& settings, const EvolveTick& tick) {
   patch.point_count = patch.subcloud.size();
   patch.iterations = 0;
+  patch.damped_nodes = 0;
   if (patch.subcloud.empty()) {
     patch.mean_distance = patch.max_distance = 0.0;
     patch.accurate = true;
@@ -37,10 +45,18 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
   const std::size_t stride = std::max<std::size_t>(1, patch.subcloud.size() / std::max<std::size_t>(settings.error_sample, 1));
   double mean = 0.0, max = 0.0;
   for (int grid = settings.initial_grid;; ++grid) {
-    Grid projected = project_grid(patch.surface, grid, grid, projector, settings.gamma);
-    patch.surface = BaseSurface(patch.surface.boundary(), projected);
-    patch.grid = std::move(projected);
-    ++patch.iterations;
+    // Where the pleat guard held nodes back, the surface moves on from where it got to, along
+    // its new normals, before the grid grows: an overhang or a steep wall is reached in a
+    // few damped steps instead of being pleated over (pleat_guard.hpp).
+    for (int step = 0; step < kMaxDampedSteps; ++step) {
+      std::size_t damped = 0;
+      Grid projected = project_grid(patch.surface, grid, grid, projector, settings.gamma, &damped);
+      patch.surface = BaseSurface(patch.surface.boundary(), projected);
+      patch.grid = std::move(projected);
+      ++patch.iterations;
+      patch.damped_nodes += damped;
+      if (damped == 0) break;
+    }
     measure_distances(patch.surface, points, patch.subcloud, stride, settings.threads, mean, max);
     if (tick) tick(grid);
     if (mean <= settings.accuracy || grid >= settings.max_grid) break;

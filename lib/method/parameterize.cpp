@@ -164,8 +164,15 @@ class Driver {
     return next;
   }
 
-  /// Algorithm A2: each point is projected onto every leaf whose subcloud holds it; the least
-  /// distance wins (ties: the lower leaf id, as leaves are visited in id order).
+  /// Algorithm A2, seam-aware: each point is projected onto every leaf whose subcloud holds
+  /// it. A foot inside its leaf (an orthogonal projection) is preferred to one clamped to a
+  /// leaf's border (better_foot); among feet of one kind the least distance wins (ties: the
+  /// lower leaf id, as leaves are visited in id order). A point whose best foot is still
+  /// clamped is then projected onto the leaves across the border it was clamped to (the
+  /// leaves whose rectangle holds the clamped foot's global (u,v)): near a seam, an apex
+  /// shared by leaf corners or a feature the leaf's surface does not reach, its orthogonal
+  /// foot usually lies on the neighbour, and snapping it to the border collapses many points
+  /// onto one (u,v).
   void parameterize_points() {
     const std::size_t n = points_.size();
     result_.u.assign(n, 0.0);
@@ -173,42 +180,81 @@ class Driver {
     result_.distance.assign(n, std::numeric_limits<double>::infinity());
     result_.patch.assign(n, -1);
     result_.level.assign(n, -1);
+    inside_.assign(n, 0);
     std::vector<int> leaves;
     for (const Patch& p : result_.patches)
       if (p.is_leaf()) leaves.push_back(p.id);
     const double begin = level_progress_end(result_.levels - 1);
     for (std::size_t l = 0; l < leaves.size(); ++l) {
-      progress_.report(begin + (1.0 - begin) * static_cast<double>(l) / leaves.size(), "parameterize");
+      progress_.report(begin + (1.0 - begin) * 0.8 * static_cast<double>(l) / leaves.size(), "parameterize");
       const Patch& leaf = result_.patches[leaves[l]];
       SurfaceProjector projector(leaf.surface);
       parallel_for(leaf.subcloud.size(), threads_, [&](std::size_t k) {
         const std::size_t i = leaf.subcloud[k];
-        const Foot foot = projector.project(points_[i]);
-        if (foot.distance < result_.distance[i]) assign(i, leaf, foot);
+        consider(i, leaf, projector.project(points_[i]));
       });
     }
     // Every point belongs to some leaf's subcloud (A4 never drops one); should one be missed,
-    // it still gets its nearest leaf rather than no parameters.
-    std::vector<std::size_t> missed;
+    // it is treated like a clamped point: it tries every leaf below.
+    std::vector<std::size_t> clamped;
     for (std::size_t i = 0; i < n; ++i)
-      if (result_.patch[i] < 0) missed.push_back(i);
-    if (missed.empty()) return;
-    for (int id : leaves) {
-      const SurfaceProjector projector(result_.patches[id].surface);
-      parallel_for(missed.size(), threads_, [&](std::size_t k) {
-        const Foot foot = projector.project(points_[missed[k]]);
-        if (foot.distance < result_.distance[missed[k]]) assign(missed[k], result_.patches[id], foot);
-      });
+      if (!inside_[i]) clamped.push_back(i);
+    if (clamped.empty()) return;
+    if (leaves.size() == 1) {
+      std::vector<std::size_t> missed;
+      for (std::size_t i : clamped)
+        if (result_.patch[i] < 0) missed.push_back(i);
+      if (!missed.empty()) project_onto(leaves[0], missed);
+      return;
     }
+    progress_.report(begin + (1.0 - begin) * 0.9, "parameterize");
+    // Across the border: each leaf takes the clamped points whose foot lies on its rectangle.
+    std::vector<std::vector<std::size_t>> across(result_.patches.size());
+    for (std::size_t i : clamped) {
+      for (int id : leaves) {
+        if (id == result_.patch[i]) continue;
+        if (result_.patch[i] < 0 || touches(result_.patches[id].rect, result_.u[i], result_.v[i])) across[id].push_back(i);
+      }
+    }
+    for (int id : leaves)
+      if (!across[id].empty()) project_onto(id, across[id]);
   }
 
-  void assign(std::size_t i, const Patch& leaf, const Foot& foot) {
+  /// Projects points[ids] onto leaf `id` and keeps each foot that is better.
+  void project_onto(int id, const std::vector<std::size_t>& ids) {
+    const Patch& leaf = result_.patches[id];
+    const SurfaceProjector projector(leaf.surface);
+    parallel_for(ids.size(), threads_, [&](std::size_t k) { consider(ids[k], leaf, projector.project(points_[ids[k]])); });
+  }
+
+  /// A rectangle of the domain holding (u,v), its border included (to rounding).
+  static bool touches(const Rect& r, double u, double v) {
+    constexpr double kSlack = 1e-12;
+    return u >= r.u0 - kSlack && u <= r.u1 + kSlack && v >= r.v0 - kSlack && v <= r.v1 + kSlack;
+  }
+
+  /// Whether a foot (inside its leaf or not, at `distance`) beats the point's current one. An
+  /// inside foot beats a clamped one unless it is much farther (then the point lies on another
+  /// sheet of the surface near that leaf, e.g. across a thin wall): more than twice the
+  /// clamped distance plus two cloud spacings.
+  bool better_foot(std::size_t i, bool inside, double distance) const {
+    const double current = result_.distance[i];
+    if (result_.patch[i] < 0) return true;
+    if (inside == static_cast<bool>(inside_[i])) return distance < current;
+    const double margin = 2.0 * result_.length_scale;
+    if (inside) return distance <= 2.0 * current + margin;
+    return !(current <= 2.0 * distance + margin);
+  }
+
+  void consider(std::size_t i, const Patch& leaf, const Foot& foot) {
+    if (!better_foot(i, foot.inside, foot.distance)) return;
     const Vec2 uv = leaf.rect.to_global(foot.u, foot.v);
     result_.u[i] = uv.x();
     result_.v[i] = uv.y();
     result_.distance[i] = foot.distance;
     result_.patch[i] = leaf.id;
     result_.level[i] = leaf.level;
+    inside_[i] = foot.inside ? 1 : 0;
   }
 
   void summarize() {
@@ -233,6 +279,7 @@ class Driver {
   int threads_;
   std::thread::id caller_;
   Result result_;
+  std::vector<char> inside_;  // per point: its foot lies inside its leaf (A2)
 };
 
 }  // namespace

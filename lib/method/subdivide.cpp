@@ -100,9 +100,21 @@ Vec3 projected_centre(const BaseSurface& surface, const DirectedProjector& proje
 }
 
 /// A child's initial surface: its boundary, and a grid x grid sample of the parent surface
-/// over the quarter starting at parent parameters (u0, v0). The grid's border holds the
-/// child's boundary (BaseSurface ignores it; it keeps the stored grid on the patch).
+/// over the quarter starting at parent parameters (u0, v0), corrected towards the child's
+/// boundary. The seams were projected onto the cloud, so they lie off the parent surface;
+/// a sample taken as it is would jump from the seam to the parent surface within one grid
+/// cell and could turn that cell over (a pleat the child then inherits). The correction is
+/// the Coons blend of the seams' offsets from the parent's own curves, so the interior
+/// follows the seams smoothly. The grid's border holds the child's boundary (BaseSurface
+/// ignores it; it keeps the stored grid on the patch).
 Patch make_child(const Patch& parent, Boundary boundary, double u0, double v0, int grid, Rect rect) {
+  auto on_parent = [&](double s, double t) { return parent.surface.eval(u0 + 0.5 * s, v0 + 0.5 * t); };
+  // Offsets of the child's sides from the parent surface along the quarter's sides.
+  auto bottom = [&](double s) { return Vec3(boundary.bottom().at(s) - on_parent(s, 0.0)); };
+  auto top = [&](double s) { return Vec3(boundary.top().at(s) - on_parent(s, 1.0)); };
+  auto left = [&](double t) { return Vec3(boundary.left().at(t) - on_parent(0.0, t)); };
+  auto right = [&](double t) { return Vec3(boundary.right().at(t) - on_parent(1.0, t)); };
+  const Vec3 c00 = bottom(0.0), c10 = bottom(1.0), c01 = top(0.0), c11 = top(1.0);
   Grid points(grid, grid);
   for (int j = 0; j < grid; ++j) {
     for (int i = 0; i < grid; ++i) {
@@ -116,7 +128,9 @@ Patch make_child(const Patch& parent, Boundary boundary, double u0, double v0, i
       } else if (j == grid - 1) {
         points(i, j) = boundary.top().at(s);
       } else {
-        points(i, j) = parent.surface.eval(u0 + 0.5 * s, v0 + 0.5 * t);
+        const Vec3 correction = (1.0 - t) * bottom(s) + t * top(s) + (1.0 - s) * left(t) + s * right(t) -
+                                ((1.0 - s) * (1.0 - t) * c00 + s * (1.0 - t) * c10 + (1.0 - s) * t * c01 + s * t * c11);
+        points(i, j) = on_parent(s, t) + correction;
       }
     }
   }

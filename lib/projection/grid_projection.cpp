@@ -28,8 +28,9 @@ std::vector<double> project_section(const std::vector<Vec3>& points, const std::
 
 }  // namespace
 
-Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProjector& projector, double gamma) {
+Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProjector& projector, double gamma, std::size_t* out_damped_nodes) {
   Grid grid = surface.sample(nu, nv);
+  if (out_damped_nodes) *out_damped_nodes = 0;
   if (nu < 3 || nv < 3) return grid;
   Grid normals(nu, nv);
   for (int j = 0; j < nv; ++j)
@@ -55,12 +56,11 @@ Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProj
     for (int j = 0; j < nv; ++j) column_offset[static_cast<std::size_t>(j) * nu + i] = t[j];
   }
 
-  for (int j = 1; j + 1 < nv; ++j)
-    for (int i = 1; i + 1 < nu; ++i) {
-      const std::size_t k = static_cast<std::size_t>(j) * nu + i;
-      grid.points[k] += 0.5 * (row_offset[k] + column_offset[k]) * normals.points[k];
-    }
-  return grid;
+  std::vector<double> offsets(grid.points.size());
+  for (std::size_t k = 0; k < offsets.size(); ++k) offsets[k] = 0.5 * (row_offset[k] + column_offset[k]);
+  GuardedMove move = move_without_pleats(surface, grid, normals, offsets);
+  if (out_damped_nodes) *out_damped_nodes = move.damped_nodes;
+  return std::move(move.grid);
 }
 
 }  // namespace dbs

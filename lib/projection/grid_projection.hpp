@@ -7,11 +7,14 @@
 #pragma once
 #include "base_surface.hpp"
 #include "curve_projection.hpp"
+#include "pleat_guard.hpp"
 
 namespace dbs {
 
 /// Samples `surface` on an nu x nv grid, projects it onto the cloud, returns the projected
-/// grid (border points unchanged). `gamma` as in eq. (6).
-Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProjector& projector, double gamma);
+/// grid (border points unchanged). `gamma` as in eq. (6). The move is pleat-free
+/// (pleat_guard.hpp): `out_damped_nodes`, when given, receives the number of nodes whose
+/// offset the guard reduced.
+Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProjector& projector, double gamma, std::size_t* out_damped_nodes = nullptr);
 
 }  // namespace dbs

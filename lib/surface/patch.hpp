@@ -22,6 +22,7 @@ struct Patch {
   double mean_distance = 0.0;          // of the subcloud to the surface
   double max_distance = 0.0;
   int iterations = 0;                  // grid evolutions
+  std::size_t damped_nodes = 0;        // grid nodes the pleat guard held back, summed over them
   bool accurate = false;               // mean_distance <= target
 
   explicit Patch(BaseSurface s) : surface(std::move(s)) {}

@@ -176,21 +176,32 @@ void middle_curves_follow_a_curved_cloud(void**) {
   assert_true(curve_gap <= 0.25 * h);
   assert_true(drift <= 1e-12);
 
-  // Each child starts as the parent surface (flat here) at its interior grid nodes, while its
-  // boundary already follows the cloud.
-  double grid_gap = 0.0;
+  // Each child starts as the parent surface (flat here) corrected by the Coons blend of its
+  // seams' offsets from the parent: its interior follows the lifted seams smoothly instead of
+  // jumping from the seam to the parent within one cell. Here the parent is z = 0 and the
+  // seams lie on the bump, so every interior node is lifted by the blend of the heights of
+  // the four sides, and never above the highest seam point nor below the parent.
+  double blend_gap = 0.0, highest_seam = 0.0, lowest_node = 1.0, highest_node = 0.0;
   for (int q = 0; q < 4; ++q) {
-    const double u0 = (q % 2) * 0.5, v0 = (q / 2) * 0.5;
-    for (int j = 1; j < 5; ++j) {
-      for (int i = 1; i < 5; ++i) {
-        const double a = i / 5.0, b = j / 5.0;
-        grid_gap = std::max(grid_gap, (c[q].surface.eval(a, b) - parent.surface.eval(u0 + 0.5 * a, v0 + 0.5 * b)).norm());
-        grid_gap = std::max(grid_gap, (c[q].grid(i, j) - parent.surface.eval(u0 + 0.5 * a, v0 + 0.5 * b)).norm());
+    const dbs::Boundary& b = c[q].surface.boundary();
+    for (int s = 0; s < 4; ++s)
+      for (const Vec3& p : b.side(static_cast<dbs::Side>(s)).points()) highest_seam = std::max(highest_seam, p.z());
+    const Grid& g = c[q].grid;
+    for (int j = 1; j + 1 < g.nv; ++j) {
+      for (int i = 1; i + 1 < g.nu; ++i) {
+        const double a = g.u(i), t = g.v(j);
+        const double lift = (1 - t) * b.bottom().at(a).z() + t * b.top().at(a).z() + (1 - a) * b.left().at(t).z() + a * b.right().at(t).z() -
+                            ((1 - a) * (1 - t) * b.bottom().at(0).z() + a * (1 - t) * b.bottom().at(1).z() + (1 - a) * t * b.top().at(0).z() + a * t * b.top().at(1).z());
+        blend_gap = std::max(blend_gap, std::abs(g(i, j).z() - lift));
+        lowest_node = std::min(lowest_node, g(i, j).z());
+        highest_node = std::max(highest_node, g(i, j).z());
       }
     }
   }
-  std::printf("curved: child surfaces at interior grid nodes vs parent %.3g\n", grid_gap);
-  assert_true(grid_gap <= 1e-12);
+  std::printf("curved: child grids vs parent + seam blend %.3g, node heights [%.3g, %.3g], highest seam %.3g\n", blend_gap, lowest_node, highest_node, highest_seam);
+  assert_true(blend_gap <= 1e-12);
+  assert_true(lowest_node > 0.0);
+  assert_true(highest_node <= highest_seam);
 }
 
 void centre_over_a_hole_keeps_the_parent_shape(void**) {
