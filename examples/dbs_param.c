@@ -375,6 +375,18 @@ int main(int argc, char **argv) {
 
   parse_command_line(argc, argv, &cmd);
   if (!has_result_extension(cmd.result_path)) usage_error("%s: the result must end in .csv, .ply or .drc", cmd.result_path);
+  /* --report needs a libdbs built with the report: refuse it before any work otherwise. */
+  if (cmd.report_dir != NULL) {
+    int32_t has_report = 0;
+    if ((status = dbs_has_feature(DBS_FEATURE_REPORT, &has_report)) != DBS_OK) {
+      library_error(status, "asking for the report");
+      return EXIT_FAILURE;
+    }
+    if (!has_report) {
+      fprintf(stderr, "dbs-param: --report %s: this libdbs was built without the report (DBS_WITH_REPORT=OFF)\n", cmd.report_dir);
+      return EXIT_FAILURE;
+    }
+  }
 
   status = dbs_options_create(&options);
   if (status != DBS_OK) {

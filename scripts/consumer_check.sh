@@ -5,7 +5,9 @@
 #   2. tests/consumer built with find_package(dbs) + dbs::dbs, and consumer.c built with
 #      `pkg-config --cflags --libs dbs`; both run;
 #   3. only dbs_* symbols are exported by the installed libdbs.so;
-#   4. the same with a static build (-DDBS_BUILD_SHARED=OFF), pkg-config --static.
+#   4. the same with a static build (-DDBS_BUILD_SHARED=OFF), pkg-config --static;
+#   5. a static minimal build (no Draco, Ceres, validation, report): its dbs.pc's private
+#      libraries name neither Qhull nor libpng (nor Draco), and both consumers build and run.
 # Build trees go to build-consumer/ (reused by later runs); the prefixes are removed at exit.
 #
 # usage: scripts/consumer_check.sh
@@ -75,5 +77,17 @@ echo "  $(nm -D --defined-only "$library" | grep -c ' dbs_') dbs_* functions, no
 
 install_libdbs static -DDBS_BUILD_SHARED=OFF
 consume static --static
+
+minimal=(-DDBS_WITH_DRACO=OFF -DDBS_WITH_CERES=OFF -DDBS_WITH_VALIDATION=OFF -DDBS_WITH_REPORT=OFF)
+install_libdbs minimal-static -DDBS_BUILD_SHARED=OFF "${minimal[@]}"
+echo "consumer_check: [minimal-static] dbs.pc lists only what was built"
+pc_file="$(find "$prefixes/minimal-static" -name dbs.pc -print -quit)"
+private="$(grep '^Libs.private:' "$pc_file")"
+echo "  $private"
+if grep -qE -- '-l(qhull|png|draco)' <<<"$private"; then
+  echo "consumer_check: $pc_file of a build without validation, report and Draco lists their libraries" >&2
+  exit 1
+fi
+consume minimal-static --static
 
 echo "consumer_check: all consumers built and ran"

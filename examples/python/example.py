@@ -58,18 +58,28 @@ def main(argv):
     print(f"S(0.5, 0.5) = {tuple(round(c, 5) for c in point)}, normal {tuple(round(c, 5) for c in normal)}")
 
     # Validation: a Delaunay mesh of the (u,v) over the cloud, its distortion, the distances.
-    mesh = dbs.Mesh.create(result, cloud)
-    triangles = mesh.triangles()
-    distortion = mesh.distortion(dbs.SCALING_PER_AXIS)
-    distances = dbs.Distances.create(result)
-    print(f"mesh: {len(triangles)} triangles, {len(mesh.suspicious())} suspicious, "
-          f"{int(distortion.stat(dbs.DISTORTION_FOLDED))} folded, conformal distortion mean "
-          f"{distortion.summary(dbs.MEASURE_CONFORMAL, dbs.SUMMARY_MEAN):.3f} p95 "
-          f"{distortion.summary(dbs.MEASURE_CONFORMAL, dbs.SUMMARY_P95):.3f}")
-    print(f"distances: p50 {distances.stat(dbs.DISTANCES_P50):.4g}, p95 {distances.stat(dbs.DISTANCES_P95):.4g}, "
-          f"{distances.stat(dbs.DISTANCES_WITHIN):.1%} within the target")
-    if len(distortion.values(dbs.MEASURE_AREA)) != len(triangles):
-        raise SystemExit("one distortion value per triangle was expected")
+    # A libdbs built without it (DBS_WITH_VALIDATION=OFF) refuses every validation call.
+    if dbs.has_feature(dbs.FEATURE_VALIDATION):
+        mesh = dbs.Mesh.create(result, cloud)
+        triangles = mesh.triangles()
+        distortion = mesh.distortion(dbs.SCALING_PER_AXIS)
+        distances = dbs.Distances.create(result)
+        print(f"mesh: {len(triangles)} triangles, {len(mesh.suspicious())} suspicious, "
+              f"{int(distortion.stat(dbs.DISTORTION_FOLDED))} folded, conformal distortion mean "
+              f"{distortion.summary(dbs.MEASURE_CONFORMAL, dbs.SUMMARY_MEAN):.3f} p95 "
+              f"{distortion.summary(dbs.MEASURE_CONFORMAL, dbs.SUMMARY_P95):.3f}")
+        print(f"distances: p50 {distances.stat(dbs.DISTANCES_P50):.4g}, p95 {distances.stat(dbs.DISTANCES_P95):.4g}, "
+              f"{distances.stat(dbs.DISTANCES_WITHIN):.1%} within the target")
+        if len(distortion.values(dbs.MEASURE_AREA)) != len(triangles):
+            raise SystemExit("one distortion value per triangle was expected")
+    else:
+        try:
+            dbs.Mesh.create(result, cloud)
+            raise SystemExit("a libdbs without validation made a mesh")
+        except dbs.DbsError as error:
+            if error.status != dbs.ERR_UNSUPPORTED:
+                raise
+            print(f"validation refused as expected: {error}")
 
     try:
         dbs.Cloud.load(cloud_path + ".missing.xyz")

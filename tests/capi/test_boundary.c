@@ -101,8 +101,7 @@ static void side_ids_and_buffers_are_checked(void **state) {
 static void load_reads_sections_in_any_order(void **state) {
   (void)state;
   char path[512];
-  temp_path(path, sizeof path, "boundary.txt");
-  write_text(path,
+  temp_file(path, sizeof path, "boundary.txt",
              "# boundary of a 100 x 50 mm panel\n"
              "top\n"
              "0 50 0\n"
@@ -129,32 +128,11 @@ static void load_reads_sections_in_any_order(void **state) {
 
 static void load_errors_name_file_and_line(void **state) {
   (void)state;
-  char path[512], where[600];
-  dbs_boundary *boundary = UNTOUCHED;
-
-  temp_path(path, sizeof path, "unknown_section.txt");
-  write_text(path, "bottom\n0 0 0\n1 0 0\nmiddle\n0 0 0\n");
-  snprintf(where, sizeof where, "%s:4", path);
-  assert_failure(dbs_boundary_load(path, &boundary), DBS_ERR_PARSE, "dbs_boundary_load", where);
-
-  temp_path(path, sizeof path, "point_first.txt");
-  write_text(path, "# header\n0 0 0\nbottom\n");
-  snprintf(where, sizeof where, "%s:2", path);
-  assert_failure(dbs_boundary_load(path, &boundary), DBS_ERR_PARSE, "dbs_boundary_load", where);
-
-  temp_path(path, sizeof path, "missing_left.txt");
-  write_text(path, "bottom\n0 0 0\n1 0 0\nright\n1 0 0\n1 1 0\ntop\n0 1 0\n1 1 0\n");
-  assert_failure(dbs_boundary_load(path, &boundary), DBS_ERR_PARSE, "dbs_boundary_load", "left");
-
-  temp_path(path, sizeof path, "malformed.txt");
-  write_text(path, "bottom\n0 0 0\n1 zero 0\n");
-  snprintf(where, sizeof where, "%s:3", path);
-  assert_failure(dbs_boundary_load(path, &boundary), DBS_ERR_PARSE, "dbs_boundary_load", where);
-
-  temp_path(path, sizeof path, "no_such_boundary.txt");
-  remove(path);
-  assert_failure(dbs_boundary_load(path, &boundary), DBS_ERR_IO, "dbs_boundary_load", path);
-  assert_ptr_equal(boundary, UNTOUCHED);
+  assert_load_error(LOAD_BOUNDARY, "unknown_section.txt", "bottom\n0 0 0\n1 0 0\nmiddle\n0 0 0\n", 4, DBS_ERR_PARSE, NULL);
+  assert_load_error(LOAD_BOUNDARY, "point_first.txt", "# header\n0 0 0\nbottom\n", 2, DBS_ERR_PARSE, NULL);
+  assert_load_error(LOAD_BOUNDARY, "missing_left.txt", "bottom\n0 0 0\n1 0 0\nright\n1 0 0\n1 1 0\ntop\n0 1 0\n1 1 0\n", 0, DBS_ERR_PARSE, "left");
+  assert_load_error(LOAD_BOUNDARY, "malformed.txt", "bottom\n0 0 0\n1 zero 0\n", 3, DBS_ERR_PARSE, NULL);
+  assert_load_error(LOAD_BOUNDARY, "no_such_boundary.txt", NULL, 0, DBS_ERR_IO, NULL);
 }
 
 static void destroy_accepts_null(void **state) {

@@ -49,11 +49,47 @@ static dbs_options *subdividing_options(void) {
   return options;
 }
 
+/* A test's run: the cloud, the boundary and the options it parameterizes with. */
+struct run {
+  dbs_cloud *cloud;
+  dbs_boundary *boundary;
+  dbs_options *options;
+};
+
+static struct run the_run;
+
+/* The subdividing case: the bump and subdividing_options(). */
+static int subdividing_setup(void **state) {
+  the_run.cloud = bump_cloud(40, 0.2);
+  the_run.boundary = square_boundary(3);
+  the_run.options = subdividing_options();
+  *state = &the_run;
+  return 0;
+}
+
+/* The plane with the default options: one patch, a quick run. */
+static int plane_setup(void **state) {
+  the_run.cloud = plane_cloud(11, 6);
+  the_run.boundary = plane_boundary(2);
+  the_run.options = NULL;
+  assert_ok(dbs_options_create(&the_run.options));
+  *state = &the_run;
+  return 0;
+}
+
+static int run_teardown(void **state) {
+  struct run *r = *state;
+  dbs_options_destroy(r->options);
+  dbs_boundary_destroy(r->boundary);
+  dbs_cloud_destroy(r->cloud);
+  return 0;
+}
+
 static void progress_rises_to_exactly_one(void **state) {
-  (void)state;
-  dbs_cloud *cloud = bump_cloud(40, 0.2);
-  dbs_boundary *boundary = square_boundary(3);
-  dbs_options *options = subdividing_options();
+  const struct run *r = *state;
+  dbs_cloud *cloud = r->cloud;
+  dbs_boundary *boundary = r->boundary;
+  dbs_options *options = r->options;
   struct progress_log *log = new_progress_log();
   assert_ok(dbs_options_set_progress(options, record_progress, log));
   dbs_result *result = parameterize_or_fail(cloud, boundary, options);
@@ -76,16 +112,13 @@ static void progress_rises_to_exactly_one(void **state) {
 
   dbs_result_destroy(result);
   free(log);
-  dbs_options_destroy(options);
-  dbs_boundary_destroy(boundary);
-  dbs_cloud_destroy(cloud);
 }
 
 static void progress_can_cancel_at_any_call(void **state) {
-  (void)state;
-  dbs_cloud *cloud = bump_cloud(40, 0.2);
-  dbs_boundary *boundary = square_boundary(3);
-  dbs_options *options = subdividing_options();
+  const struct run *r = *state;
+  dbs_cloud *cloud = r->cloud;
+  dbs_boundary *boundary = r->boundary;
+  dbs_options *options = r->options;
   struct progress_log *log = new_progress_log();
   assert_ok(dbs_options_set_progress(options, record_progress, log));
   dbs_result *result = parameterize_or_fail(cloud, boundary, options);
@@ -103,17 +136,13 @@ static void progress_can_cancel_at_any_call(void **state) {
     assert_int_equal(log->calls, cancel_at[k]);
   }
   free(log);
-  dbs_options_destroy(options);
-  dbs_boundary_destroy(boundary);
-  dbs_cloud_destroy(cloud);
 }
 
 static void cleared_progress_is_not_called(void **state) {
-  (void)state;
-  dbs_cloud *cloud = plane_cloud(11, 6);
-  dbs_boundary *boundary = plane_boundary(2);
-  dbs_options *options = NULL;
-  assert_ok(dbs_options_create(&options));
+  const struct run *r = *state;
+  dbs_cloud *cloud = r->cloud;
+  dbs_boundary *boundary = r->boundary;
+  dbs_options *options = r->options;
   struct progress_log *log = new_progress_log();
   log->cancel_at = 1; /* would cancel if it were called */
   assert_ok(dbs_options_set_progress(options, record_progress, log));
@@ -122,29 +151,24 @@ static void cleared_progress_is_not_called(void **state) {
   assert_int_equal(log->calls, 0);
   dbs_result_destroy(result);
   free(log);
-  dbs_options_destroy(options);
-  dbs_boundary_destroy(boundary);
-  dbs_cloud_destroy(cloud);
 }
 
 static void clones_carry_the_callbacks(void **state) {
-  (void)state;
-  dbs_cloud *cloud = plane_cloud(11, 6);
-  dbs_boundary *boundary = plane_boundary(2);
-  dbs_options *options = NULL, *clone = NULL;
-  assert_ok(dbs_options_create(&options));
+  struct run *r = *state;
+  dbs_cloud *cloud = r->cloud;
+  dbs_boundary *boundary = r->boundary;
+  dbs_options *clone = NULL;
   struct progress_log *log = new_progress_log();
-  assert_ok(dbs_options_set_progress(options, record_progress, log));
-  assert_ok(dbs_options_clone(options, &clone));
-  dbs_options_destroy(options);
+  assert_ok(dbs_options_set_progress(r->options, record_progress, log));
+  assert_ok(dbs_options_clone(r->options, &clone));
+  dbs_options_destroy(r->options); /* the clone outlives its original */
+  r->options = NULL;
   dbs_result *result = parameterize_or_fail(cloud, boundary, clone);
   assert_true(log->calls >= 2);
   assert_true(log->fractions[log->calls - 1] == 1.0);
   dbs_result_destroy(result);
   free(log);
   dbs_options_destroy(clone);
-  dbs_boundary_destroy(boundary);
-  dbs_cloud_destroy(cloud);
 }
 
 #define MAX_LEVELS 16
@@ -216,10 +240,10 @@ static struct level_log *new_level_log(void) {
 }
 
 static void level_callback_sees_every_level(void **state) {
-  (void)state;
-  dbs_cloud *cloud = bump_cloud(40, 0.2);
-  dbs_boundary *boundary = square_boundary(3);
-  dbs_options *options = subdividing_options();
+  const struct run *r = *state;
+  dbs_cloud *cloud = r->cloud;
+  dbs_boundary *boundary = r->boundary;
+  dbs_options *options = r->options;
   struct level_log *log = new_level_log();
   assert_ok(dbs_options_set_level_callback(options, record_level, log));
   dbs_result *result = parameterize_or_fail(cloud, boundary, options);
@@ -243,16 +267,13 @@ static void level_callback_sees_every_level(void **state) {
 
   dbs_result_destroy(result);
   free(log);
-  dbs_options_destroy(options);
-  dbs_boundary_destroy(boundary);
-  dbs_cloud_destroy(cloud);
 }
 
 static void level_callback_can_cancel(void **state) {
-  (void)state;
-  dbs_cloud *cloud = bump_cloud(40, 0.2);
-  dbs_boundary *boundary = square_boundary(3);
-  dbs_options *options = subdividing_options();
+  const struct run *r = *state;
+  dbs_cloud *cloud = r->cloud;
+  dbs_boundary *boundary = r->boundary;
+  dbs_options *options = r->options;
   struct level_log *log = new_level_log();
   struct progress_log *progress = new_progress_log();
   assert_ok(dbs_options_set_level_callback(options, record_level, log));
@@ -270,19 +291,16 @@ static void level_callback_can_cancel(void **state) {
   }
   free(progress);
   free(log);
-  dbs_options_destroy(options);
-  dbs_boundary_destroy(boundary);
-  dbs_cloud_destroy(cloud);
 }
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(progress_rises_to_exactly_one),
-      cmocka_unit_test(progress_can_cancel_at_any_call),
-      cmocka_unit_test(cleared_progress_is_not_called),
-      cmocka_unit_test(clones_carry_the_callbacks),
-      cmocka_unit_test(level_callback_sees_every_level),
-      cmocka_unit_test(level_callback_can_cancel),
+      cmocka_unit_test_setup_teardown(progress_rises_to_exactly_one, subdividing_setup, run_teardown),
+      cmocka_unit_test_setup_teardown(progress_can_cancel_at_any_call, subdividing_setup, run_teardown),
+      cmocka_unit_test_setup_teardown(cleared_progress_is_not_called, plane_setup, run_teardown),
+      cmocka_unit_test_setup_teardown(clones_carry_the_callbacks, plane_setup, run_teardown),
+      cmocka_unit_test_setup_teardown(level_callback_sees_every_level, subdividing_setup, run_teardown),
+      cmocka_unit_test_setup_teardown(level_callback_can_cancel, subdividing_setup, run_teardown),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

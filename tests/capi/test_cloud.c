@@ -107,8 +107,7 @@ static void points_buffer_too_small(void **state) {
 static void load_xyz_text(void **state) {
   (void)state;
   char path[512];
-  temp_path(path, sizeof path, "cloud.xyz");
-  write_text(path,
+  temp_file(path, sizeof path, "cloud.xyz",
              "# a comment line\n"
              "1 2 3\n"
              "\n"
@@ -127,8 +126,7 @@ static void load_xyz_text(void **state) {
   dbs_cloud_destroy(cloud);
 
   /* .txt is the same format, and the extension is case-insensitive */
-  temp_path(path, sizeof path, "cloud.TXT");
-  write_text(path, "0 0 0\n1 0 0\n");
+  temp_file(path, sizeof path, "cloud.TXT", "0 0 0\n1 0 0\n");
   assert_ok(dbs_cloud_load(path, &cloud));
   assert_ok(dbs_cloud_count(cloud, &count));
   assert_int_equal(count, 2);
@@ -137,36 +135,12 @@ static void load_xyz_text(void **state) {
 
 static void load_text_errors_name_file_and_line(void **state) {
   (void)state;
-  char path[512], where[600];
-  dbs_cloud *cloud = UNTOUCHED;
-
-  temp_path(path, sizeof path, "malformed.xyz");
-  write_text(path, "0 0 0\n# comment\n1 2 x\n");
-  snprintf(where, sizeof where, "%s:3", path);
-  assert_failure(dbs_cloud_load(path, &cloud), DBS_ERR_PARSE, "dbs_cloud_load", where);
-
-  temp_path(path, sizeof path, "short.xyz");
-  write_text(path, "0 0 0\n1 2\n");
-  snprintf(where, sizeof where, "%s:2", path);
-  assert_failure(dbs_cloud_load(path, &cloud), DBS_ERR_PARSE, "dbs_cloud_load", where);
-
-  temp_path(path, sizeof path, "nan.xyz");
-  write_text(path, "0 0 0\n1 1 1\n2 nan 2\n");
-  snprintf(where, sizeof where, "%s:3", path);
-  assert_failure(dbs_cloud_load(path, &cloud), DBS_ERR_NON_FINITE, "dbs_cloud_load", where);
-
-  temp_path(path, sizeof path, "empty.xyz");
-  write_text(path, "# nothing but a comment\n\n");
-  assert_failure(dbs_cloud_load(path, &cloud), DBS_ERR_EMPTY, "dbs_cloud_load", path);
-
-  temp_path(path, sizeof path, "missing.xyz");
-  remove(path);
-  assert_failure(dbs_cloud_load(path, &cloud), DBS_ERR_IO, "dbs_cloud_load", path);
-
-  temp_path(path, sizeof path, "cloud.unknown");
-  write_text(path, "0 0 0\n");
-  assert_failure(dbs_cloud_load(path, &cloud), DBS_ERR_UNSUPPORTED, "dbs_cloud_load", ".unknown");
-  assert_ptr_equal(cloud, UNTOUCHED);
+  assert_load_error(LOAD_CLOUD, "malformed.xyz", "0 0 0\n# comment\n1 2 x\n", 3, DBS_ERR_PARSE, NULL);
+  assert_load_error(LOAD_CLOUD, "short.xyz", "0 0 0\n1 2\n", 2, DBS_ERR_PARSE, NULL);
+  assert_load_error(LOAD_CLOUD, "nan.xyz", "0 0 0\n1 1 1\n2 nan 2\n", 3, DBS_ERR_NON_FINITE, NULL);
+  assert_load_error(LOAD_CLOUD, "empty.xyz", "# nothing but a comment\n\n", 0, DBS_ERR_EMPTY, NULL);
+  assert_load_error(LOAD_CLOUD, "missing.xyz", NULL, 0, DBS_ERR_IO, NULL);
+  assert_load_error(LOAD_CLOUD, "cloud.unknown", "0 0 0\n", 0, DBS_ERR_UNSUPPORTED, ".unknown");
 }
 
 static const double kFilePoints[4][3] = {{0, 0, 0}, {1.5, 0, 0.25}, {0, 2, -1}, {3, 4, 5}};
@@ -193,8 +167,7 @@ static void assert_file_points(const char *path) {
 static void load_ply_and_obj(void **state) {
   (void)state;
   char path[512];
-  temp_path(path, sizeof path, "cloud.ply");
-  write_text(path,
+  temp_file(path, sizeof path, "cloud.ply",
              "ply\n"
              "format ascii 1.0\n"
              "element vertex 4\n"
@@ -208,8 +181,7 @@ static void load_ply_and_obj(void **state) {
              "3 4 5\n");
   assert_file_points(path);
 
-  temp_path(path, sizeof path, "cloud.obj");
-  write_text(path,
+  temp_file(path, sizeof path, "cloud.obj",
              "# four vertices and a face\n"
              "v 0 0 0\n"
              "v 1.5 0 0.25\n"
@@ -222,8 +194,7 @@ static void load_ply_and_obj(void **state) {
 static void load_broken_ply(void **state) {
   (void)state;
   char path[512];
-  temp_path(path, sizeof path, "broken.ply");
-  write_text(path, "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n");
+  temp_file(path, sizeof path, "broken.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n");
   if (!reads_with_draco(path)) return;
   dbs_cloud *cloud = UNTOUCHED;
   int status = dbs_cloud_load(path, &cloud);

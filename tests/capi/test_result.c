@@ -376,13 +376,8 @@ static void patch_indices_and_sides_are_checked(void **state) {
   for (int c = 0; c < 4; ++c) assert_true(rect[c] == -7);
 }
 
-/* The lines of a text file; returns the count (at most `max`), each NUL-terminated in place. */
-static size_t read_lines(const char *path, char *text, size_t size, char **lines, size_t max) {
-  FILE *file = fopen(path, "rb");
-  assert_non_null(file);
-  size_t got = fread(text, 1, size - 1, file);
-  fclose(file);
-  text[got] = '\0';
+/* The lines of `text`, each NUL-terminated in place; returns the count (at most `max`). */
+static size_t split_lines(char *text, char **lines, size_t max) {
   size_t count = 0;
   for (char *line = strtok(text, "\n"); line && count < max; line = strtok(NULL, "\n")) lines[count++] = line;
   return count;
@@ -394,9 +389,9 @@ static void save_csv(void **state) {
   temp_path(path, sizeof path, "result.csv");
   assert_ok(dbs_result_save(f->result, f->cloud, path));
 
-  static char text[1 << 16];
+  char *text = read_all(path, NULL);
   char *lines[NPOINTS + 2];
-  assert_int_equal(read_lines(path, text, sizeof text, lines, NPOINTS + 2), NPOINTS + 1);
+  assert_int_equal(split_lines(text, lines, NPOINTS + 2), NPOINTS + 1);
   assert_string_equal(lines[0], "index,u,v,distance,patch,level");
   double uv[2 * NPOINTS];
   assert_ok(dbs_result_uv(f->result, uv, NPOINTS));
@@ -410,6 +405,7 @@ static void save_csv(void **state) {
     assert_int_equal(patch, 0);
     assert_int_equal(level, 0);
   }
+  free(text);
 }
 
 /* The saved points read back as a cloud: the same count and bounding box. */
@@ -435,12 +431,7 @@ static void save_ply_and_drc(void **state) {
   char path[512];
   temp_path(path, sizeof path, "result.ply");
   assert_ok(dbs_result_save(f->result, f->cloud, path));
-  static char text[1 << 16];
-  FILE *file = fopen(path, "rb");
-  assert_non_null(file);
-  size_t got = fread(text, 1, sizeof text - 1, file);
-  fclose(file);
-  text[got] = '\0'; /* the header is text; the binary body follows "end_header" */
+  char *text = read_all(path, NULL); /* the header is text; the binary body follows "end_header" */
   assert_memory_equal(text, "ply\n", 4);
   assert_non_null(strstr(text, "format binary_little_endian 1.0"));
   assert_non_null(strstr(text, "element vertex 231"));
@@ -448,6 +439,7 @@ static void save_ply_and_drc(void **state) {
   assert_non_null(strstr(text, "property float v"));
   assert_non_null(strstr(text, "property float distance"));
   assert_non_null(strstr(text, "property int patch"));
+  free(text);
   assert_reloads_as_the_cloud(path, 1e-6);
 
   temp_path(path, sizeof path, "result.drc");

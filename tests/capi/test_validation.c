@@ -1,15 +1,42 @@
 /* Validation (dbs_mesh_*, dbs_distortion_*, dbs_distances_*, dbs_report_write): the Delaunay
  * mesh of a planar cloud whose parameterization is an exact affine map, its distortion under
  * both domain scalings, a caller's mesh, distance statistics checked against the per-point
- * outputs, the mesh files and the report, and every error path. */
+ * outputs, the mesh files and the report, and every error path.
+ *
+ * Built without the validation (DBS_HAVE_VALIDATION unset) or the report (DBS_HAVE_REPORT
+ * unset), the same program checks instead that every function of the missing component is
+ * exported and refuses with DBS_ERR_UNSUPPORTED and a message naming the option. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#ifdef DBS_HAVE_REPORT
 #include <png.h>
+#endif
 
 #include "capi_support.h"
+
+#define assert_unsupported(call, function, needle) \
+  assert_failure((call), DBS_ERR_UNSUPPORTED, (function), (needle))
+#define WITHOUT_REPORT "built without the report (DBS_WITH_REPORT=OFF)"
+#define WITHOUT_VALIDATION "built without validation (DBS_WITH_VALIDATION=OFF)"
+
+#ifndef DBS_HAVE_REPORT
+/* dbs_report_write refuses whatever its arguments and writes nothing. */
+static void check_report_unsupported(const dbs_result *result, const dbs_cloud *cloud) {
+  char dir[512];
+  temp_path(dir, sizeof dir, "unsupported_report");
+  assert_unsupported(dbs_report_write(result, cloud, NULL, dir), "dbs_report_write", WITHOUT_REPORT);
+  assert_int_equal(remove(dir), -1); /* no directory was made */
+  assert_unsupported(dbs_report_write(NULL, NULL, NULL, NULL), "dbs_report_write", WITHOUT_REPORT);
+  int32_t built = -1;
+  assert_ok(dbs_has_feature(DBS_FEATURE_REPORT, &built));
+  assert_int_equal(built, 0);
+}
+#endif
+
+#ifdef DBS_HAVE_VALIDATION
 
 #define NX 41
 #define NY 21
@@ -272,22 +299,6 @@ static void test_distances(void **state) {
   free(d);
 }
 
-static char *read_all(const char *path, size_t *out_size) {
-  FILE *file = fopen(path, "rb");
-  assert_non_null(file);
-  assert_int_equal(fseek(file, 0, SEEK_END), 0);
-  long size = ftell(file);
-  assert_true(size >= 0);
-  rewind(file);
-  char *text = malloc((size_t)size + 1);
-  assert_non_null(text);
-  assert_int_equal(fread(text, 1, (size_t)size, file), (size_t)size);
-  text[size] = '\0';
-  fclose(file);
-  if (out_size) *out_size = (size_t)size;
-  return text;
-}
-
 /* Number of lines of `text` starting with `prefix`. */
 static size_t count_lines(const char *text, const char *prefix) {
   size_t count = 0, len = strlen(prefix);
@@ -296,6 +307,7 @@ static size_t count_lines(const char *text, const char *prefix) {
   return count;
 }
 
+#ifdef DBS_HAVE_REPORT
 /* Decodes a PNG file completely with libpng (a truncated or corrupt file fails here) and gives
  * its size; the picture must not be blank: at least two distinct pixel values. */
 static void png_size(const char *path, uint32_t *width, uint32_t *height) {
@@ -315,6 +327,7 @@ static void png_size(const char *path, uint32_t *width, uint32_t *height) {
   *height = image.height;
   free(pixels);
 }
+#endif
 
 static void test_mesh_files(void **state) {
   struct fixture *f = *state;
@@ -323,6 +336,7 @@ static void test_mesh_files(void **state) {
   temp_path(mtl, sizeof mtl, "plane_mesh.mtl");
   temp_path(texture, sizeof texture, "plane_mesh_texture.png");
   temp_path(ply, sizeof ply, "plane_mesh.ply");
+#ifdef DBS_HAVE_REPORT
   assert_ok(dbs_mesh_save(f->plane_mesh, obj));
   char *content = read_all(obj, NULL);
   const char *slash = strrchr(mtl, '/');
@@ -343,6 +357,14 @@ static void test_mesh_files(void **state) {
   png_size(texture, &width, &height);
   assert_int_equal(width, 1024); /* the plane is twice as long as wide: so is the texture */
   assert_int_equal(height, 512);
+#else
+  /* the textured OBJ needs the report's texture; the PLY does not */
+  assert_unsupported(dbs_mesh_save(f->plane_mesh, obj), "dbs_mesh_save", WITHOUT_REPORT);
+  assert_int_equal(remove(obj), -1);
+  assert_int_equal(remove(mtl), -1);
+  assert_int_equal(remove(texture), -1);
+  char *content = NULL;
+#endif
 
   assert_ok(dbs_mesh_save(f->plane_mesh, ply));
   size_t size = 0;
@@ -365,6 +387,7 @@ static void test_mesh_files(void **state) {
   assert_failure(dbs_mesh_save(f->plane_mesh, missing), DBS_ERR_IO, "dbs_mesh_save", "no/such/dir");
 }
 
+#ifdef DBS_HAVE_REPORT
 static void test_report(void **state) {
   struct fixture *f = *state;
   char dir[512], path[700];
@@ -422,11 +445,16 @@ static void test_report(void **state) {
   assert_int_equal(remove(dir), 0);
   /* a directory that cannot be created: a file is in the way */
   char blocker[512];
-  temp_path(blocker, sizeof blocker, "report_blocker");
-  write_text(blocker, "x");
+  temp_file(blocker, sizeof blocker, "report_blocker", "x");
   snprintf(path, sizeof path, "%s/sub", blocker);
   assert_failure(dbs_report_write(f->bump_result, f->bump, NULL, path), DBS_ERR_IO, "dbs_report_write", "report_blocker");
 }
+#else
+static void test_report(void **state) {
+  struct fixture *f = *state;
+  check_report_unsupported(f->bump_result, f->bump);
+}
+#endif
 
 static void test_errors(void **state) {
   struct fixture *f = *state;
@@ -473,7 +501,9 @@ static void test_errors(void **state) {
   assert_failure(dbs_distances_stat(stats, -1, DBS_DISTANCES_TOLERANCE + 1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_distances_stat", "stat");
   dbs_distances_destroy(stats);
 
+#ifdef DBS_HAVE_REPORT
   assert_failure(dbs_report_write(f->plane_result, f->bump, NULL, DBS_TEST_TMP_DIR), DBS_ERR_INVALID_ARGUMENT, "dbs_report_write", "cloud");
+#endif
   /* destroying NULL is allowed */
   dbs_mesh_destroy(NULL);
   dbs_distortion_destroy(NULL);
@@ -533,9 +563,11 @@ static void test_null_arguments(void **state) {
   assert_null_argument(dbs_distances_stat(NULL, -1, 0, &value), "dbs_distances_stat", "distances");
   assert_null_argument(dbs_distances_stat(stats, -1, 0, NULL), "dbs_distances_stat", "out");
   dbs_distances_destroy(stats);
+#ifdef DBS_HAVE_REPORT
   assert_null_argument(dbs_report_write(NULL, f->bump, NULL, DBS_TEST_TMP_DIR), "dbs_report_write", "result");
   assert_null_argument(dbs_report_write(f->bump_result, NULL, NULL, DBS_TEST_TMP_DIR), "dbs_report_write", "cloud");
   assert_null_argument(dbs_report_write(f->bump_result, f->bump, NULL, NULL), "dbs_report_write", "dir");
+#endif
   assert_true(value == 0.0 && count == 0 && indices[0] == 0 && buffer[0] == 0.0); /* outputs untouched */
 }
 
@@ -570,3 +602,68 @@ int main(void) {
   };
   return cmocka_run_group_tests(tests, setup, teardown);
 }
+
+#else /* a libdbs built without validation */
+
+/* Every validation function is exported and refuses, whatever its arguments (there are no
+ * validation handles to give it); its outputs are left untouched. */
+static void test_without_validation(void **state) {
+  (void)state;
+  int32_t built = -1;
+  assert_ok(dbs_has_feature(DBS_FEATURE_VALIDATION, &built));
+  assert_int_equal(built, 0);
+  dbs_cloud *cloud = plane_cloud(5, 3);
+  dbs_boundary *boundary = plane_boundary(3);
+  dbs_result *result = parameterize_or_fail(cloud, boundary, NULL);
+  dbs_mesh *mesh = NULL;
+  dbs_distortion *distortion = NULL;
+  dbs_distances *distances = NULL;
+  size_t count = 7;
+  double xyz[3] = {-7, -7, -7}, value = -7;
+  int32_t indices[3] = {-7, -7, -7};
+  const int32_t triangle[3] = {0, 1, 5};
+  char path[512];
+  temp_path(path, sizeof path, "unsupported_mesh.ply");
+
+  assert_unsupported(dbs_mesh_create(result, cloud, &mesh), "dbs_mesh_create", WITHOUT_VALIDATION);
+  assert_unsupported(dbs_mesh_vertex_count(mesh, &count), "dbs_mesh_vertex_count", WITHOUT_VALIDATION);
+  assert_unsupported(dbs_mesh_vertices(mesh, xyz, 1), "dbs_mesh_vertices", WITHOUT_VALIDATION);
+  assert_unsupported(dbs_mesh_uv(mesh, xyz, 1), "dbs_mesh_uv", WITHOUT_VALIDATION);
+  assert_unsupported(dbs_mesh_triangle_count(mesh, &count), "dbs_mesh_triangle_count", WITHOUT_VALIDATION);
+  assert_unsupported(dbs_mesh_triangles(mesh, indices, 1), "dbs_mesh_triangles", WITHOUT_VALIDATION);
+  assert_unsupported(dbs_mesh_suspicious_count(mesh, &count), "dbs_mesh_suspicious_count", WITHOUT_VALIDATION);
+  assert_unsupported(dbs_mesh_suspicious(mesh, indices, 3), "dbs_mesh_suspicious", WITHOUT_VALIDATION);
+  assert_unsupported(dbs_mesh_save(mesh, path), "dbs_mesh_save", WITHOUT_VALIDATION);
+  assert_int_equal(remove(path), -1); /* nothing written */
+  assert_unsupported(dbs_mesh_distortion(mesh, DBS_SCALING_UNIFORM, &distortion), "dbs_mesh_distortion", WITHOUT_VALIDATION);
+  assert_unsupported(dbs_distortion_create(result, cloud, triangle, 1, DBS_SCALING_PER_AXIS, &distortion), "dbs_distortion_create", WITHOUT_VALIDATION);
+  assert_unsupported(dbs_distortion_stat(distortion, DBS_DISTORTION_TRIANGLES, &value), "dbs_distortion_stat", WITHOUT_VALIDATION);
+  assert_unsupported(dbs_distortion_summary(distortion, DBS_MEASURE_CONFORMAL, DBS_SUMMARY_MEAN, &value), "dbs_distortion_summary", WITHOUT_VALIDATION);
+  assert_unsupported(dbs_distortion_values(distortion, DBS_MEASURE_AREA, xyz, 3), "dbs_distortion_values", WITHOUT_VALIDATION);
+  assert_unsupported(dbs_distances_create(result, 0.0, &distances), "dbs_distances_create", WITHOUT_VALIDATION);
+  assert_unsupported(dbs_distances_stat(distances, -1, DBS_DISTANCES_MEAN, &value), "dbs_distances_stat", WITHOUT_VALIDATION);
+  /* NULL arguments: still "unsupported", the first thing a caller needs to know */
+  assert_unsupported(dbs_mesh_create(NULL, NULL, NULL), "dbs_mesh_create", WITHOUT_VALIDATION);
+  assert_unsupported(dbs_distances_create(NULL, 0.0, NULL), "dbs_distances_create", WITHOUT_VALIDATION);
+  assert_null(mesh);
+  assert_null(distortion);
+  assert_null(distances);
+  assert_true(count == 7 && value == -7 && xyz[0] == -7 && indices[0] == -7);
+  dbs_mesh_destroy(NULL); /* the destroy functions accept NULL as always */
+  dbs_distortion_destroy(NULL);
+  dbs_distances_destroy(NULL);
+  check_report_unsupported(result, cloud); /* no report without validation */
+
+  dbs_result_destroy(result);
+  dbs_boundary_destroy(boundary);
+  dbs_cloud_destroy(cloud);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_without_validation),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
+
+#endif

@@ -29,8 +29,7 @@ static void at_least_version_compares(void **state) {
 static void features_are_reported(void **state) {
   (void)state;
   char path[512];
-  temp_path(path, sizeof path, "feature.ply");
-  write_text(path, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n");
+  temp_file(path, sizeof path, "feature.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n");
   if (reads_with_draco(path)) { /* without Draco it has checked that the load is refused */
     dbs_cloud *cloud = NULL;
     assert_ok(dbs_cloud_load(path, &cloud));

@@ -5,12 +5,12 @@
 
 #include "boundary_io.hpp"
 #include "error.hpp"
-#include "io_test_support.hpp"
+#include "core_test_support.hpp"
 
 using dbs::ErrorCode;
 using dbs::Vec3;
-using io_test::expect_error;
-using io_test::write_tmp;
+using core_test::expect_error;
+using core_test::write_tmp;
 
 namespace {
 
@@ -140,7 +140,7 @@ void malformed_files_name_file_and_line(void**) {
   const std::string empty = write_tmp("boundary_io_empty.txt", "# nothing\n\n");
   expect_error([&] { dbs::load_boundary(empty); }, ErrorCode::Empty, {empty});
 
-  const std::string absent = io_test::tmp_path("boundary_io_absent.txt");
+  const std::string absent = core_test::tmp_path("boundary_io_absent.txt");
   expect_error([&] { dbs::load_boundary(absent); }, ErrorCode::Io, {absent, "No such file"});
 }
 

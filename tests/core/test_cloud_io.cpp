@@ -12,12 +12,12 @@
 #include "cloud_io.hpp"
 #include "draco_io.hpp"
 #include "error.hpp"
-#include "io_test_support.hpp"
+#include "core_test_support.hpp"
 
 using dbs::ErrorCode;
 using dbs::Vec3;
-using io_test::expect_error;
-using io_test::write_tmp;
+using core_test::expect_error;
+using core_test::write_tmp;
 
 namespace {
 
@@ -140,9 +140,9 @@ void xyz_rejects_malformed_truncated_nonfinite_and_empty(void**) {
   const std::string empty = write_tmp("cloud_io_empty.xyz", "");
   expect_error([&] { dbs::load_cloud(empty); }, ErrorCode::Empty, {empty});
 
-  const std::string missing = io_test::tmp_path("cloud_io_does_not_exist.xyz");
+  const std::string missing = core_test::tmp_path("cloud_io_does_not_exist.xyz");
   expect_error([&] { dbs::load_cloud(missing); }, ErrorCode::Io, {missing, "No such file"});
-  const std::string directory = io_test::tmp_path("cloud_io_directory.xyz");
+  const std::string directory = core_test::tmp_path("cloud_io_directory.xyz");
   mkdir(directory.c_str(), 0755);
   expect_error([&] { dbs::load_cloud(directory); }, ErrorCode::Io, {directory, "Is a directory"});
 }
@@ -299,7 +299,7 @@ void obj_rejects_malformed_truncated_nonfinite_and_empty(void**) {
 
 void drc_round_trips_within_quantization(void**) {
   if (!dbs::draco_available()) {
-    expect_error([] { dbs::load_cloud(io_test::tmp_path("cloud_io_any.drc")); }, ErrorCode::Unsupported, {"without Draco"});
+    expect_error([] { dbs::load_cloud(core_test::tmp_path("cloud_io_any.drc")); }, ErrorCode::Unsupported, {"without Draco"});
     return;
   }
   const auto pts = awkward_points(20000);
@@ -308,7 +308,7 @@ void drc_round_trips_within_quantization(void**) {
     u[i] = static_cast<double>(i) / (pts.size() - 1);
     v[i] = 1.0 - u[i] * u[i];
   }
-  const std::string path = io_test::tmp_path("cloud_io_points.DRC");
+  const std::string path = core_test::tmp_path("cloud_io_points.DRC");
   dbs::write_draco_point_cloud(path, pts, u, v);
   const auto got = dbs::load_cloud(path).points();
   assert_int_equal(got.size(), pts.size());
@@ -335,16 +335,16 @@ void drc_rejects_garbage_truncated_and_empty(void**) {
   expect_error([&] { dbs::load_cloud(garbage); }, ErrorCode::Parse, {garbage, "not a valid Draco file"});
   const auto pts = awkward_points(500);
   const std::vector<double> uv(pts.size(), 0.5);
-  const std::string whole = io_test::tmp_path("cloud_io_whole.drc");
+  const std::string whole = core_test::tmp_path("cloud_io_whole.drc");
   dbs::write_draco_point_cloud(whole, pts, uv, uv);
-  const std::string bytes = io_test::read_all(whole);
+  const std::string bytes = core_test::read_all(whole);
   for (const std::size_t keep : {bytes.size() / 2, std::size_t{12}}) {
     const std::string cut = write_tmp("cloud_io_cut.drc", bytes.substr(0, keep));
     expect_error([&] { dbs::load_cloud(cut); }, ErrorCode::Parse, {cut, "not a valid Draco file"});
   }
   const std::string empty = write_tmp("cloud_io_empty.drc", "");
   expect_error([&] { dbs::load_cloud(empty); }, ErrorCode::Empty, {empty});
-  const std::string missing = io_test::tmp_path("cloud_io_missing.drc");
+  const std::string missing = core_test::tmp_path("cloud_io_missing.drc");
   expect_error([&] { dbs::load_cloud(missing); }, ErrorCode::Io, {missing});
   // writing checks its input
   expect_error([&] { dbs::write_draco_point_cloud(whole, pts, uv, {}); }, ErrorCode::InvalidArgument, {whole});

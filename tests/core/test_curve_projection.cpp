@@ -13,20 +13,16 @@
 #include "cloud_index.hpp"
 #include "curve_projection.hpp"
 #include "error.hpp"
+#include "core_test_support.hpp"  // last of the dbs headers
 
 // cmocka last (its fail() macro would hide dbs::fail), with C linkage (its header does
 // not declare it).
-#include <stdarg.h>
-#include <stddef.h>
-#include <setjmp.h>
-#include <stdint.h>
-extern "C" {
-#include <cmocka.h>
-}
 
 using namespace dbs;
 
 namespace {
+
+using core_test::throws;
 
 constexpr double kGamma = 0.5;
 
@@ -197,16 +193,6 @@ void densify_keeps_every_point_and_spacing(void**) {
   // A per-segment cap: 10 units at spacing 0.01 would need 1000 sub-segments.
   const CurveProjectionInput capped = densify_polygon({{0, 0, 0}, {10, 0, 0}}, {{0, 0, 1}, {0, 0, 1}}, 0.01, original, 16);
   assert_int_equal(capped.nodes.size(), 17);
-}
-
-template <class F>
-bool throws(ErrorCode code, F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.code() == code;
-  }
-  return false;
 }
 
 void bad_input_is_rejected(void**) {

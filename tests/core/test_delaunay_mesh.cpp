@@ -12,20 +12,14 @@
 #include "delaunay_mesh.hpp"
 #include "error.hpp"
 #include "suspicious_triangles.hpp"
-
-// cmocka last (its fail() macro would hide dbs::fail), with C linkage.
-#include <stdarg.h>
-#include <stddef.h>
-#include <setjmp.h>
-#include <stdint.h>
-extern "C" {
-#include <cmocka.h>
-}
+#include "core_test_support.hpp"  // last of the dbs headers
 
 using dbs::Triangle;
 using dbs::Vec3;
 
 namespace {
+
+using core_test::error_code_of;
 
 double signed_area(const std::vector<double>& u, const std::vector<double>& v, const Triangle& t) {
   return 0.5 * ((u[t[1]] - u[t[0]]) * (v[t[2]] - v[t[0]]) - (v[t[1]] - v[t[0]]) * (u[t[2]] - u[t[0]]));
@@ -112,16 +106,6 @@ void test_duplicates_are_left_out(void**) {
   }
   assert_int_equal(used.size(), distinct);  // one index per distinct (u,v)
   assert_true(std::abs(area - 1.0) < 1e-12);
-}
-
-template <class F>
-dbs::ErrorCode error_code_of(F f) {
-  try {
-    f();
-  } catch (const dbs::Error& e) {
-    return e.code();
-  }
-  return dbs::ErrorCode::Internal;  // "nothing thrown"
 }
 
 void test_degenerate_input(void**) {

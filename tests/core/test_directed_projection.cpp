@@ -11,20 +11,16 @@
 #include "cloud_index.hpp"
 #include "directed_projection.hpp"
 #include "error.hpp"
+#include "core_test_support.hpp"  // last of the dbs headers
 
 // cmocka last (its fail() macro would hide dbs::fail), with C linkage (its header does
 // not declare it).
-#include <stdarg.h>
-#include <stddef.h>
-#include <setjmp.h>
-#include <stdint.h>
-extern "C" {
-#include <cmocka.h>
-}
 
 using namespace dbs;
 
 namespace {
+
+using core_test::throws;
 
 constexpr double kW = DirectedProjector::kNeglectedWeight;
 
@@ -168,16 +164,6 @@ void projection_is_invariant_to_scale_and_rigid_motion(void**) {
   }
   assert_true(worst_t <= 1e-9);
   assert_true(worst_c0 <= 1e-9);
-}
-
-template <class F>
-bool throws(ErrorCode code, F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.code() == code;
-  }
-  return false;
 }
 
 void bad_input_and_empty_rays(void**) {

@@ -6,17 +6,11 @@
 #include "distance_stats.hpp"
 #include "error.hpp"
 #include "summary_stats.hpp"
-
-// cmocka last (its fail() macro would hide dbs::fail), with C linkage.
-#include <stdarg.h>
-#include <stddef.h>
-#include <setjmp.h>
-#include <stdint.h>
-extern "C" {
-#include <cmocka.h>
-}
+#include "core_test_support.hpp"  // last of the dbs headers
 
 namespace {
+
+using core_test::error_code_of;
 
 bool near(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); }
 
@@ -63,16 +57,6 @@ void test_percentile(void**) {
   assert_true(dbs::percentile_of_sorted({}, 50.0) == 0.0);
   const dbs::MeasureSummary s = dbs::summarize({3.0, 1.0, 2.0});
   assert_true(near(s.min, 1.0) && near(s.mean, 2.0) && near(s.p95, 2.9) && near(s.max, 3.0));
-}
-
-template <class F>
-dbs::ErrorCode error_code_of(F f) {
-  try {
-    f();
-  } catch (const dbs::Error& e) {
-    return e.code();
-  }
-  return dbs::ErrorCode::Internal;  // "nothing thrown"
 }
 
 void test_errors(void**) {

@@ -8,21 +8,15 @@
 
 #include "distortion.hpp"
 #include "error.hpp"
-
-// cmocka last (its fail() macro would hide dbs::fail), with C linkage.
-#include <stdarg.h>
-#include <stddef.h>
-#include <setjmp.h>
-#include <stdint.h>
-extern "C" {
-#include <cmocka.h>
-}
+#include "core_test_support.hpp"  // last of the dbs headers
 
 using dbs::DomainScaling;
 using dbs::Triangle;
 using dbs::Vec3;
 
 namespace {
+
+using core_test::error_code_of;
 
 // An nx x ny grid of the rectangle [0, 3] x [0, 2] tilted out of the plane z = 0 by a
 // rotation (distortion does not depend on the 3D placement), two triangles per cell,
@@ -192,16 +186,6 @@ void test_degenerate_triangles(void**) {
   assert_int_equal(d.summary.folded, 0);
   // the other triangles are untouched isometries; the degenerate ones are in no summary
   assert_true(std::abs(d.summary.conformal.max - 1.0) < 1e-12);
-}
-
-template <class F>
-dbs::ErrorCode error_code_of(F f) {
-  try {
-    f();
-  } catch (const dbs::Error& e) {
-    return e.code();
-  }
-  return dbs::ErrorCode::Internal;  // "nothing thrown"
 }
 
 void test_errors(void**) {

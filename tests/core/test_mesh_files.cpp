@@ -3,7 +3,6 @@
 // announced elements and values.
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -13,29 +12,18 @@
 #include "mesh_files.hpp"
 #include "png_file.hpp"
 #include "textured_mesh.hpp"
-
-// cmocka last (its fail() macro would hide dbs::fail), with C linkage.
-#include <stdarg.h>
-#include <stddef.h>
-#include <setjmp.h>
-#include <stdint.h>
-extern "C" {
-#include <cmocka.h>
-}
+#include "core_test_support.hpp"  // last of the dbs headers
 
 using dbs::Triangle;
 using dbs::Vec3;
 
 namespace {
 
-std::string temp_file(const std::string& name) { return std::string(DBS_TEST_TMP_DIR) + "/mesh_files_" + name; }
+using core_test::error_code_of;
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using core_test::read_all;
+
+std::string temp_file(const std::string& name) { return core_test::tmp_path("mesh_files_" + name); }
 
 std::size_t count_lines(const std::string& text, const std::string& prefix) {
   std::size_t count = 0;
@@ -56,7 +44,7 @@ void test_obj_mtl_texture(void**) {
   const dbs::CirclePattern pattern(2.0, 1.0, 8);
   const std::string obj = temp_file("small.obj");
   dbs::write_textured_obj(obj, m.points, m.u, m.v, m.triangles, pattern.texture(256));
-  const std::string text = read_text(obj);
+  const std::string text = read_all(obj);
   assert_true(text.find("\nmtllib mesh_files_small.mtl\n") != std::string::npos);
   assert_int_equal(count_lines(text, "v "), m.points.size());
   assert_int_equal(count_lines(text, "vt "), m.points.size());
@@ -64,7 +52,7 @@ void test_obj_mtl_texture(void**) {
   assert_true(text.find("\nvt 0.25 0.5\n") != std::string::npos);  // the unused point's (u,v) too
   assert_true(text.find("\nf 2/2 3/3 6/6\n") != std::string::npos);  // triangle {1, 2, 5}, 1-based, vt = v
   assert_true(text.find("\nusemtl dbs_circles\n") != std::string::npos);
-  const std::string mtl = read_text(temp_file("small.mtl"));
+  const std::string mtl = read_all(temp_file("small.mtl"));
   assert_true(mtl.find("newmtl dbs_circles\n") != std::string::npos);
   assert_true(mtl.find("\nmap_Kd mesh_files_small_texture.png\n") != std::string::npos);
   // The texture: twice as wide as high (scale 2 : 1), 8 disks across.
@@ -83,7 +71,7 @@ void test_ply(void**) {
   const SmallMesh m;
   const std::string path = temp_file("small.ply");
   dbs::write_ply_mesh(path, m.points, m.u, m.v, m.triangles);
-  const std::string data = read_text(path);
+  const std::string data = read_all(path);
   const std::string end = "end_header\n";
   const std::size_t body = data.find(end) + end.size();
   const std::string header = data.substr(0, body);
@@ -102,16 +90,6 @@ void test_ply(void**) {
   assert_int_equal(face[0], 3);
   assert_true(indices[0] == 1 && indices[1] == 2 && indices[2] == 5);
   std::remove(path.c_str());
-}
-
-template <class F>
-dbs::ErrorCode error_code_of(F f) {
-  try {
-    f();
-  } catch (const dbs::Error& e) {
-    return e.code();
-  }
-  return dbs::ErrorCode::Internal;  // "nothing thrown"
 }
 
 void test_errors(void**) {

@@ -5,19 +5,13 @@
 
 #include "error.hpp"
 #include "png_file.hpp"
-
-// cmocka last (its fail() macro would hide dbs::fail), with C linkage.
-#include <stdarg.h>
-#include <stddef.h>
-#include <setjmp.h>
-#include <stdint.h>
-extern "C" {
-#include <cmocka.h>
-}
+#include "core_test_support.hpp"  // last of the dbs headers
 
 namespace {
 
-std::string temp_file(const char* name) { return std::string(DBS_TEST_TMP_DIR) + "/png_image_" + name; }
+using core_test::error_code_of;
+
+std::string temp_file(const std::string& name) { return core_test::tmp_path("png_image_" + name); }
 
 void test_round_trip(void**) {
   dbs::RgbImage image(37, 21, {10, 20, 30});
@@ -35,16 +29,6 @@ void test_round_trip(void**) {
   assert_true((back.at(0, 5) == dbs::Rgb{255, 0, 0}));
   assert_true((back.at(0, 3) == dbs::Rgb{10, 20, 30}));
   std::remove(path.c_str());
-}
-
-template <class F>
-dbs::ErrorCode error_code_of(F f) {
-  try {
-    f();
-  } catch (const dbs::Error& e) {
-    return e.code();
-  }
-  return dbs::ErrorCode::Internal;  // "nothing thrown"
 }
 
 void test_errors(void**) {

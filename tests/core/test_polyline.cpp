@@ -7,21 +7,17 @@
 
 #include "error.hpp"
 #include "polyline.hpp"
+#include "core_test_support.hpp"  // last of the dbs headers
 
 // cmocka last (its fail() macro would hide dbs::fail), with C linkage (its header does
 // not declare it).
-#include <stdarg.h>
-#include <stddef.h>
-#include <setjmp.h>
-#include <stdint.h>
-extern "C" {
-#include <cmocka.h>
-}
 
 using dbs::Polyline;
 using dbs::Vec3;
 
 namespace {
+
+using core_test::error_code_of;
 
 // Segments of lengths 1, 3, 0.5, 5 (total 9.5), turning in 3D.
 std::vector<Vec3> uneven_points() {
@@ -42,16 +38,6 @@ double arc_length(const Polyline& p) {
   double len = 0;
   for (std::size_t i = 1; i < p.size(); ++i) len += (p.points()[i] - p.points()[i - 1]).norm();
   return len;
-}
-
-template <class F>
-dbs::ErrorCode error_code_of(F f) {
-  try {
-    f();
-  } catch (const dbs::Error& e) {
-    return e.code();
-  }
-  return dbs::ErrorCode::Internal;  // "nothing thrown"
 }
 
 void test_length_and_ends(void**) {

@@ -13,13 +13,13 @@
 #include "draco_io.hpp"
 #include "error.hpp"
 #include "result_io.hpp"
-#include "io_test_support.hpp"
+#include "core_test_support.hpp"
 
 using dbs::ErrorCode;
 using dbs::Vec3;
-using io_test::expect_error;
-using io_test::read_all;
-using io_test::tmp_path;
+using core_test::expect_error;
+using core_test::read_all;
+using core_test::tmp_path;
 
 namespace {
 

@@ -117,6 +117,68 @@ void write_text(const char *path, const char *text) {
   assert_int_equal(fclose(file), 0);
 }
 
+char *read_all(const char *path, size_t *out_size) {
+  FILE *file = fopen(path, "rb");
+  assert_non_null(file);
+  assert_int_equal(fseek(file, 0, SEEK_END), 0);
+  long size = ftell(file);
+  assert_true(size >= 0);
+  rewind(file);
+  char *text = malloc((size_t)size + 1);
+  assert_non_null(text);
+  assert_int_equal(fread(text, 1, (size_t)size, file), (size_t)size);
+  text[size] = '\0';
+  fclose(file);
+  if (out_size) *out_size = (size_t)size;
+  return text;
+}
+
+void temp_file(char *buffer, size_t size, const char *name, const char *text) {
+  temp_path(buffer, size, name);
+  write_text(buffer, text);
+}
+
+void check_load_error(enum load_kind kind, const char *name, const char *text, int line, int expected, const char *needle, const char *file, int source_line) {
+  char path[512], where[600];
+  temp_path(path, sizeof path, name);
+  if (text != NULL) {
+    write_text(path, text);
+  } else {
+    remove(path);
+  }
+  if (line > 0) {
+    snprintf(where, sizeof where, "%s:%d", path, line);
+  } else {
+    snprintf(where, sizeof where, "%s", path);
+  }
+  int status, touched;
+  const char *function;
+  if (kind == LOAD_CLOUD) {
+    dbs_cloud *const untouched = (dbs_cloud *)0x1;
+    dbs_cloud *cloud = untouched;
+    function = "dbs_cloud_load";
+    status = dbs_cloud_load(path, &cloud);
+    touched = cloud != untouched;
+    if (status == DBS_OK) dbs_cloud_destroy(cloud);
+  } else {
+    dbs_boundary *const untouched = (dbs_boundary *)0x1;
+    dbs_boundary *boundary = untouched;
+    function = "dbs_boundary_load";
+    status = dbs_boundary_load(path, &boundary);
+    touched = boundary != untouched;
+    if (status == DBS_OK) dbs_boundary_destroy(boundary);
+  }
+  check_failure(status, expected, function, where, file, source_line);
+  if (needle != NULL && strstr(dbs_last_error_message(), needle) == NULL) {
+    print_error("%s:%d: %s(\"%s\"): message \"%s\" lacks \"%s\"\n", file, source_line, function, name, dbs_last_error_message(), needle);
+    _fail(file, source_line);
+  }
+  if (touched) {
+    print_error("%s:%d: %s(\"%s\") failed but wrote its output\n", file, source_line, function, name);
+    _fail(file, source_line);
+  }
+}
+
 int has_draco(void) {
   int32_t draco = -1;
   assert_ok(dbs_has_feature(DBS_FEATURE_DRACO, &draco));

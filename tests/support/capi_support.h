@@ -39,6 +39,21 @@ dbs_result *parameterize_or_fail(const dbs_cloud *cloud, const dbs_boundary *bou
 void temp_path(char *buffer, size_t size, const char *name);
 /* Writes `text` to `path`, failing the test if that is impossible. */
 void write_text(const char *path, const char *text);
+/* The whole content of the file at `path`, NUL-terminated (binary content may hold more NULs),
+ * its size in *out_size when that is not NULL; the caller frees it. */
+char *read_all(const char *path, size_t *out_size);
+/* temp_path(name) holding `text`: a fresh temporary file, its path in `buffer`. */
+void temp_file(char *buffer, size_t size, const char *name, const char *text);
+
+/* The loaders whose file errors assert_load_error checks. */
+enum load_kind { LOAD_CLOUD, LOAD_BOUNDARY };
+/* Writes `text` into the temporary file `name` (text NULL: makes sure there is no such file),
+ * loads it with dbs_cloud_load or dbs_boundary_load and asserts that the load fails with
+ * `expected`, a message naming the file (as "PATH:LINE" when `line` > 0) and holding `needle`
+ * (when not NULL), and that the output handle is left untouched. */
+#define assert_load_error(kind, name, text, line, expected, needle) \
+  check_load_error((kind), (name), (text), (line), (expected), (needle), __FILE__, __LINE__)
+void check_load_error(enum load_kind kind, const char *name, const char *text, int line, int expected, const char *needle, const char *file, int source_line);
 
 /* 1 when the loaded libdbs has Draco (dbs_has_feature), else 0. */
 int has_draco(void);
