@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs the Debian packages libdbs needs (only when some are missing) and builds libdbs,
-# dbs-param, the examples and the tests into build/ (Release).
+# Installs the Debian packages libdbs needs (only when some are missing) and builds what the
+# README's first command uses into build/ (Release): libdbs, dbs-param and the examples, no
+# tests and no benchmark (scripts/test.sh builds those into the same build/).
 #
 # usage: scripts/setup.sh            (from anywhere; safe to run again)
 set -euo pipefail
@@ -28,6 +29,8 @@ launcher=()
 if command -v ccache >/dev/null 2>&1; then
   launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
-cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}"
-cmake --build "$build" -j"$(nproc)"
-echo "setup: built into $build"
+cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE=Release -DDBS_BUILD_EXAMPLES=ON -DDBS_BUILD_TESTS=OFF \
+  -DDBS_BUILD_BENCH=OFF "${launcher[@]}"
+# dbs_examples: libdbs, dbs-param and the example programs (examples/CMakeLists.txt), nothing else
+cmake --build "$build" -j"$(nproc)" --target dbs_examples
+echo "setup: built libdbs, dbs-param and the examples into $build"

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Runs every check of libdbs: set-up and Release build (build/) and its test suite, the whole
+# Runs every check of libdbs: set-up (scripts/setup.sh: packages, library, dbs-param and the
+# examples), the rest of the Release build (tests and benchmark, build/) and its test suite, the whole
 # suite again under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/), the suite of a
-# build without the optional Draco and Ceres (build-minimal/), and the outside-consumer check
-# of the installed package (shared and static). Exits non-zero if
+# build without the optional Draco, Ceres, validation and report (build-minimal/), and the
+# outside-consumer check of the installed package (shared and static, full and minimal). Exits non-zero if
 # anything fails; the summary at the end lists each step with its time.
 #
 # usage: scripts/test.sh
@@ -39,6 +40,14 @@ if command -v ccache >/dev/null 2>&1; then
   launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
 
+# The rest of build/ after scripts/setup.sh: the same configuration with the tests and the
+# benchmark, so only those are compiled on top of what the set-up built.
+build_release() {
+  cmake -S "$repo" -B "$repo/build" -DCMAKE_BUILD_TYPE=Release -DDBS_BUILD_EXAMPLES=ON -DDBS_BUILD_TESTS=ON \
+    -DDBS_BUILD_BENCH=ON "${launcher[@]}" &&
+    cmake --build "$repo/build" -j"$jobs"
+}
+
 build_asan() {
   # -O1 -g1: line numbers in sanitizer reports at a third of the compile time of -O2 -g.
   local flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1"
@@ -48,26 +57,29 @@ build_asan() {
     cmake --build "$repo/build-asan" -j"$jobs"
 }
 
-# Without the optional dependencies: .ply/.obj/.drc are refused as unsupported, the rest works.
+# The minimal build: no Draco, Ceres, validation or report. .ply/.obj/.drc and every validation
+# and report function are refused as unsupported, the rest works; libdbs links neither Qhull
+# nor libpng (the linked_libraries test).
 build_minimal() {
   cmake -S "$repo" -B "$repo/build-minimal" -DCMAKE_BUILD_TYPE=Release -DDBS_WITH_DRACO=OFF -DDBS_WITH_CERES=OFF \
-    -DDBS_BUILD_BENCH=OFF "${launcher[@]}" &&
+    -DDBS_WITH_VALIDATION=OFF -DDBS_WITH_REPORT=OFF -DDBS_BUILD_BENCH=OFF "${launcher[@]}" &&
     cmake --build "$repo/build-minimal" -j"$jobs"
 }
 
-step "set-up and Release build (scripts/setup.sh)" bash scripts/setup.sh
+step "set-up: packages, library, dbs-param, examples (scripts/setup.sh)" bash scripts/setup.sh
 if [ "$failed" -ne 0 ]; then
   echo "test: the set-up failed; nothing else can run" >&2
   exit 1
 fi
+step "Release build: tests and benchmark (build/)" build_release
 step "test suite, Release (build/)" run_ctest build
 step "ASan+UBSan build (build-asan/)" build_asan
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 step "test suite, ASan+UBSan (build-asan/)" run_ctest build-asan
 unset ASAN_OPTIONS UBSAN_OPTIONS
-step "build without Draco and Ceres (build-minimal/)" build_minimal
-step "test suite, without Draco and Ceres (build-minimal/)" run_ctest build-minimal
+step "minimal build: no Draco, Ceres, validation, report (build-minimal/)" build_minimal
+step "test suite, minimal build (build-minimal/)" run_ctest build-minimal
 step "installed-package consumers (scripts/consumer_check.sh)" bash scripts/consumer_check.sh
 
 echo
