@@ -39,9 +39,17 @@ double stat_value(const dbs::Result& r, int32_t stat) {
     case DBS_STAT_SECONDS_EVOLVE: return r.stage_seconds.evolve;
     case DBS_STAT_SECONDS_SUBDIVIDE: return r.stage_seconds.subdivide;
     case DBS_STAT_SECONDS_PARAMETERIZE: return r.stage_seconds.parameterize;
+    case DBS_STAT_SECONDS_FOLDS: return r.stage_seconds.folds;
+    case DBS_STAT_REQUESTED_ACCURACY: return r.requested_accuracy;
+    case DBS_STAT_REQUESTED_MET: return r.requested_accuracy_met ? 1.0 : 0.0;
+    case DBS_STAT_NOISE: return r.noise;
+    case DBS_STAT_FOLDED_SHARE: return r.folded_share;
+    case DBS_STAT_FOLDED_POINTS: return static_cast<double>(r.folded_points);
+    case DBS_STAT_UNDECIDED_POINTS: return static_cast<double>(r.undecided_points);
+    case DBS_STAT_COINCIDENT_POINTS: return static_cast<double>(r.coincident_points);
     default: break;
   }
-  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_SECONDS_PARAMETERIZE + 1) + ")");
+  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_COINCIDENT_POINTS + 1) + ")");
 }
 
 }  // namespace

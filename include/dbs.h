@@ -137,7 +137,7 @@ extern "C" {
 /* ---- version ------------------------------------------------------------------ */
 /* Version of this header (\since 0.1). */
 #define DBS_VERSION_MAJOR 0
-#define DBS_VERSION_MINOR 2
+#define DBS_VERSION_MINOR 3
 #define DBS_VERSION_PATCH 0
 /** MAJOR*10000 + MINOR*100 + PATCH */
 #define DBS_VERSION_NUMBER (DBS_VERSION_MAJOR * 10000 + DBS_VERSION_MINOR * 100 + DBS_VERSION_PATCH)
@@ -271,6 +271,7 @@ typedef struct dbs_options dbs_options;
 #define DBS_OPT_THREADS 7           /* int; 0 = all hardware threads; [0, 256]. Output never depends on it. */
 #define DBS_OPT_SUBCLOUD_NEAR 8     /* double; 0.25; (0, 10]. A4.3 "near" limit, fraction of the diagonal of the child's bounding box in the frame of its corners. */
 #define DBS_OPT_SUBCLOUD_OWN 9      /* double; 0.05; [0, 10], <= near. A4.4 "own" limit, fraction of the child's diagonal. */
+#define DBS_OPT_NOISE_FLOOR 10      /* int; 1; [0, 1]. \since 0.3. 1: the accuracy target used is the larger of the requested one and the noise floor, 1.25 sigma sqrt(2/pi) for the cloud's estimated noise sigma (the mean distance a surface on the true surface scores), so a noisy cloud is not chased to the last level; 0: the requested target as given. */
 
 /* Solvers for DBS_OPT_SOLVER (pinned; \since 0.1). */
 #define DBS_SOLVER_LINEAR 0 /* banded linear least squares (always available) */
@@ -387,8 +388,8 @@ DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, do
 #define DBS_STAT_MEAN_DISTANCE 0 /* mean point-to-surface distance over all points, cloud units */
 #define DBS_STAT_MAX_DISTANCE 1  /* largest point-to-surface distance, cloud units */
 #define DBS_STAT_RMS_DISTANCE 2  /* root mean square of the point-to-surface distances, cloud units */
-#define DBS_STAT_ACCURACY 3      /* the mean-distance target that was used, in cloud units */
-#define DBS_STAT_ACCURACY_MET 4  /* 1 when every leaf met the target, else 0 */
+#define DBS_STAT_ACCURACY 3      /* the mean-distance target that was used, in cloud units: the requested one, raised to the noise floor when DBS_OPT_NOISE_FLOOR is 1 (since 0.3) */
+#define DBS_STAT_ACCURACY_MET 4  /* 1 when every leaf met the target that was used (DBS_STAT_ACCURACY), else 0 */
 #define DBS_STAT_LEVELS 5        /* number of quadtree levels (1 = root only), a count */
 #define DBS_STAT_PATCHES 6       /* number of patches in the quadtree, a count */
 #define DBS_STAT_LEAVES 7        /* number of leaf patches, a count */
@@ -399,6 +400,14 @@ DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, do
 #define DBS_STAT_SECONDS_EVOLVE 12       /* ... evolving base surfaces (all levels), seconds */
 #define DBS_STAT_SECONDS_SUBDIVIDE 13    /* ... subdividing patches and splitting subclouds, seconds */
 #define DBS_STAT_SECONDS_PARAMETERIZE 14 /* ... projecting every point onto its leaves (A2), seconds */
+#define DBS_STAT_SECONDS_FOLDS 15        /* \since 0.3: ... measuring the folds (DBS_STAT_FOLDED_*), seconds */
+#define DBS_STAT_REQUESTED_ACCURACY 16   /* \since 0.3: the target the options asked for (absolute, or relative times the diagonal), cloud units */
+#define DBS_STAT_REQUESTED_MET 17        /* \since 0.3: 1 when every leaf met the requested target, else 0 */
+#define DBS_STAT_NOISE 18                /* \since 0.3: the cloud's estimated noise sigma (deviation along the normal, from local quadric fits), cloud units; 0 on a clean cloud */
+#define DBS_STAT_FOLDED_SHARE 19         /* \since 0.3: share in [0,1] of the decided points whose neighbourhood (k nearest in 3D, consistently oriented tangent frames) is mapped to (u,v) with reversed orientation; needs no mesh and does not trust the base surfaces */
+#define DBS_STAT_FOLDED_POINTS 20        /* \since 0.3: number of such folded points, a count */
+#define DBS_STAT_UNDECIDED_POINTS 21     /* \since 0.3: points whose neighbourhood is not surface-like enough to decide (not counted as folded), a count */
+#define DBS_STAT_COINCIDENT_POINTS 22    /* \since 0.3: points sharing one (u,v) with another point, a count */
 /** One summary statistic (DBS_STAT_*) of the result, in the unit given beside its id.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (stat). \since 0.1 */
 DBS_API int dbs_result_stat(const dbs_result *result, int32_t stat, double *out);

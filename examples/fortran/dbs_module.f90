@@ -11,7 +11,7 @@ module dbs
   implicit none
 
   ! ---- version ----------------------------------------------------------------------
-  integer(c_int32_t), parameter :: DBS_VERSION_MAJOR = 0, DBS_VERSION_MINOR = 2, DBS_VERSION_PATCH = 0
+  integer(c_int32_t), parameter :: DBS_VERSION_MAJOR = 0, DBS_VERSION_MINOR = 3, DBS_VERSION_PATCH = 0
   integer(c_int32_t), parameter :: DBS_FEATURE_DRACO = 0
   integer(c_int32_t), parameter :: DBS_FEATURE_VALIDATION = 1
   integer(c_int32_t), parameter :: DBS_FEATURE_REPORT = 2
@@ -32,6 +32,7 @@ module dbs
   integer(c_int32_t), parameter :: DBS_OPT_INITIAL_GRID = 3, DBS_OPT_MAX_GRID = 4, DBS_OPT_SMOOTHING = 5
   integer(c_int32_t), parameter :: DBS_OPT_SOLVER = 6, DBS_OPT_THREADS = 7
   integer(c_int32_t), parameter :: DBS_OPT_SUBCLOUD_NEAR = 8, DBS_OPT_SUBCLOUD_OWN = 9
+  integer(c_int32_t), parameter :: DBS_OPT_NOISE_FLOOR = 10
   integer(c_int32_t), parameter :: DBS_SOLVER_LINEAR = 0, DBS_SOLVER_CERES = 1
 
   ! ---- result statistics ---------------------------------------------------------------
@@ -41,6 +42,10 @@ module dbs
   integer(c_int32_t), parameter :: DBS_STAT_SECONDS = 9, DBS_STAT_LENGTH_SCALE = 10
   integer(c_int32_t), parameter :: DBS_STAT_SECONDS_INDEX = 11, DBS_STAT_SECONDS_EVOLVE = 12
   integer(c_int32_t), parameter :: DBS_STAT_SECONDS_SUBDIVIDE = 13, DBS_STAT_SECONDS_PARAMETERIZE = 14
+  integer(c_int32_t), parameter :: DBS_STAT_SECONDS_FOLDS = 15, DBS_STAT_REQUESTED_ACCURACY = 16
+  integer(c_int32_t), parameter :: DBS_STAT_REQUESTED_MET = 17, DBS_STAT_NOISE = 18
+  integer(c_int32_t), parameter :: DBS_STAT_FOLDED_SHARE = 19, DBS_STAT_FOLDED_POINTS = 20
+  integer(c_int32_t), parameter :: DBS_STAT_UNDECIDED_POINTS = 21, DBS_STAT_COINCIDENT_POINTS = 22
 
   ! ---- validation: meshes, distortion, distances ----------------------------------------
   real(c_double), parameter :: DBS_MESH_SUSPICIOUS_FACTOR = 4.0_c_double

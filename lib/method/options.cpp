@@ -30,6 +30,7 @@ const OptionSpec kSpecs[] = {
     {{"threads", true, 0.0, 256.0}, false},
     {{"subcloud_near", false, 0.0, 10.0}, true},
     {{"subcloud_own", false, 0.0, 10.0}, false},
+    {{"noise_floor", true, 0.0, 1.0}, false},
 };
 constexpr int kOptionCount = static_cast<int>(sizeof(kSpecs) / sizeof(kSpecs[0]));
 
@@ -78,6 +79,7 @@ int Options::*integer_member(OptionId id) {
     case OptionId::InitialGrid: return &Options::initial_grid;
     case OptionId::MaxGrid: return &Options::max_grid;
     case OptionId::Threads: return &Options::threads;
+    case OptionId::NoiseFloor: return &Options::noise_floor;
     default: return nullptr;
   }
 }

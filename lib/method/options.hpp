@@ -26,6 +26,9 @@ struct Options {
   int threads = 0;                  // 0 = hardware concurrency
   double subcloud_near = 0.25;
   double subcloud_own = 0.05;
+  /// 1: the accuracy target is raised to the noise floor (what a surface on the true surface
+  /// would score against the cloud's estimated noise); 0: the target is used as given.
+  int noise_floor = 1;
   ProgressFn progress;
   LevelFn on_level;
 };
@@ -42,6 +45,7 @@ enum class OptionId {
   Threads = 7,
   SubcloudNear = 8,
   SubcloudOwn = 9,
+  NoiseFloor = 10,
 };
 
 struct OptionInfo {

@@ -1,5 +1,6 @@
 #include "parameterize.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -11,6 +12,8 @@
 #include "corner_frame.hpp"
 #include "error.hpp"
 #include "evolve.hpp"
+#include "fold_measure.hpp"
+#include "noise_estimate.hpp"
 #include "parallel.hpp"
 #include "progress.hpp"
 #include "subcloud.hpp"
@@ -23,6 +26,11 @@ namespace {
 // Share of the progress range given to each phase.
 constexpr double kIndexEnd = 0.05;
 constexpr double kLevelsEnd = 0.85;
+
+/// The noise floor is this safety factor times the mean distance sigma sqrt(2/pi) that a
+/// surface on the true surface scores against Gaussian noise sigma.
+constexpr double kNoiseFloorFactor = 1.25;
+constexpr double kPi = 3.14159265358979323846;
 
 // A patch with fewer points than this is not subdivided: its children would have too few
 // points to carry a grid.
@@ -48,7 +56,7 @@ class Driver {
  public:
   Driver(const PointCloud& cloud, const Boundary& boundary, const Options& options)
       : points_(cloud.points()), options_(options), progress_(options.progress), threads_(resolve_threads(options.threads)), caller_(std::this_thread::get_id()) {
-    result_.accuracy = options.accuracy > 0.0 ? options.accuracy : options.relative_accuracy * cloud_size(cloud, boundary);
+    result_.requested_accuracy = options.accuracy > 0.0 ? options.accuracy : options.relative_accuracy * cloud_size(cloud, boundary);
     Patch root{BaseSurface(boundary)};
     root.subcloud.resize(points_.size());
     std::iota(root.subcloud.begin(), root.subcloud.end(), std::size_t{0});
@@ -60,10 +68,18 @@ class Driver {
     progress_.report(0.0, "index");
     {
       CloudIndex index(points_);
-      result_.length_scale = cloud_spacing(index);
+      const NoiseEstimate noise = estimate_noise(index, threads_);
+      result_.length_scale = noise.spacing;
+      result_.noise = noise.sigma;
     }
     result_.stage_seconds.index = seconds_since(start);
     if (!(result_.length_scale > 0.0)) fail(ErrorCode::Degenerate, "the cloud's points all coincide (length scale 0)");
+    // The noise floor: a surface lying exactly on the true surface scores a mean distance of
+    // about sigma sqrt(2/pi) against points with Gaussian noise sigma along the normal; a
+    // target below that can only be met by following the noise (leaves tilting, subdividing
+    // to the last level, folds), so it is raised to a safety factor above it.
+    const double floor = kNoiseFloorFactor * result_.noise * std::sqrt(2.0 / kPi);
+    result_.accuracy = options_.noise_floor ? std::max(result_.requested_accuracy, floor) : result_.requested_accuracy;
     progress_.report(kIndexEnd, "index");
 
     std::vector<int> level_ids{0};
@@ -75,6 +91,13 @@ class Driver {
     parameterize_points();
     summarize();
     result_.stage_seconds.parameterize = seconds_since(parameterize_start);
+    const auto folds_start = Clock::now();
+    const FoldMeasure folds = measure_folds(points_, result_.u, result_.v, result_.noise, threads_);
+    result_.folded_points = folds.folded;
+    result_.undecided_points = folds.undecided;
+    result_.coincident_points = folds.coincident;
+    result_.folded_share = folds.folded_share;
+    result_.stage_seconds.folds = seconds_since(folds_start);
     result_.seconds = seconds_since(start);
     progress_.finish();
     return std::move(result_);
@@ -268,9 +291,12 @@ class Driver {
     result_.mean_distance = sum / n;
     result_.rms_distance = std::sqrt(sum2 / n);
     result_.max_distance = max;
-    result_.accuracy_met = true;
-    for (const Patch& p : result_.patches)
-      if (p.is_leaf() && !p.accurate) result_.accuracy_met = false;
+    result_.accuracy_met = result_.requested_accuracy_met = true;
+    for (const Patch& p : result_.patches) {
+      if (!p.is_leaf()) continue;
+      if (!p.accurate) result_.accuracy_met = false;
+      if (!(p.mean_distance <= result_.requested_accuracy)) result_.requested_accuracy_met = false;
+    }
   }
 
   const std::vector<Vec3>& points_;

@@ -16,15 +16,21 @@ struct Result {
   std::vector<Patch> patches;
   // summary
   double mean_distance = 0.0, max_distance = 0.0, rms_distance = 0.0;
-  double accuracy = 0.0;      // target used, cloud units
+  double accuracy = 0.0;      // target used (the effective one), cloud units
   bool accuracy_met = false;  // every leaf met it
+  double requested_accuracy = 0.0;      // the caller's target (absolute or relative), cloud units
+  bool requested_accuracy_met = false;  // every leaf met the requested target
+  double noise = 0.0;                   // estimated noise deviation sigma along the normal, cloud units
+  // The fold measure of the (u,v) (fold_measure.hpp): no connectivity, no trust in the surface.
+  std::size_t folded_points = 0, undecided_points = 0, coincident_points = 0;
+  double folded_share = 0.0;  // folded / decided points
   int levels = 0;             // quadtree levels present (1 = root only)
   int iterations = 0;         // grid evolutions over all patches
   double length_scale = 0.0;  // h
   double seconds = 0.0;
   /// Wall-clock time of each stage (their sum is about `seconds`).
   struct StageSeconds {
-    double index = 0.0, evolve = 0.0, subdivide = 0.0, parameterize = 0.0;
+    double index = 0.0, evolve = 0.0, subdivide = 0.0, parameterize = 0.0, folds = 0.0;
   } stage_seconds;
 
   std::size_t leaf_count() const;

@@ -102,15 +102,26 @@ static void statistics(void **state) {
   assert_true(fabs(result_stat(f->result, DBS_STAT_LENGTH_SCALE) - 0.1) < 1e-12);
   {
     /* The stages are timed separately and make up the whole run. */
-    const double stages = result_stat(f->result, DBS_STAT_SECONDS_INDEX) + result_stat(f->result, DBS_STAT_SECONDS_EVOLVE) + result_stat(f->result, DBS_STAT_SECONDS_SUBDIVIDE) + result_stat(f->result, DBS_STAT_SECONDS_PARAMETERIZE);
+    const double stages = result_stat(f->result, DBS_STAT_SECONDS_INDEX) + result_stat(f->result, DBS_STAT_SECONDS_EVOLVE) + result_stat(f->result, DBS_STAT_SECONDS_SUBDIVIDE) + result_stat(f->result, DBS_STAT_SECONDS_PARAMETERIZE) + result_stat(f->result, DBS_STAT_SECONDS_FOLDS);
+    assert_true(result_stat(f->result, DBS_STAT_SECONDS_FOLDS) > 0.0);
     assert_true(result_stat(f->result, DBS_STAT_SECONDS_EVOLVE) > 0.0);
     assert_true(result_stat(f->result, DBS_STAT_SECONDS_PARAMETERIZE) > 0.0);
     assert_true(stages <= result_stat(f->result, DBS_STAT_SECONDS));
   }
 
+  /* A clean plane: no noise, so the floor leaves the requested target as it is; nothing folds,
+   * no two points share a (u,v). */
+  assert_true(result_stat(f->result, DBS_STAT_NOISE) < 1e-9);
+  assert_true(result_stat(f->result, DBS_STAT_REQUESTED_ACCURACY) == result_stat(f->result, DBS_STAT_ACCURACY));
+  assert_true(result_stat(f->result, DBS_STAT_REQUESTED_MET) == result_stat(f->result, DBS_STAT_ACCURACY_MET));
+  assert_true(result_stat(f->result, DBS_STAT_FOLDED_SHARE) == 0.0);
+  assert_true(result_stat(f->result, DBS_STAT_FOLDED_POINTS) == 0.0);
+  assert_true(result_stat(f->result, DBS_STAT_COINCIDENT_POINTS) == 0.0);
+  assert_true(result_stat(f->result, DBS_STAT_UNDECIDED_POINTS) <= 0.1 * NPOINTS);
+
   double value = -7;
-  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 15)");
-  assert_failure(dbs_result_stat(f->result, 15, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 15 ");
+  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 23)");
+  assert_failure(dbs_result_stat(f->result, 23, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 23 ");
   assert_true(value == -7);
 }
 
