@@ -67,10 +67,9 @@
  *    its options; dbs_mesh_create and dbs_distortion_create use all hardware threads.
  *    Results never depend on the thread count.
  *  - A worker thread that cannot be started (std::system_error, e.g. at the process's
- *    thread limit) fails the call with DBS_ERR_INTERNAL when it is the first worker of its
- *    step. Known defect of 0.2: when other workers of the step are already running, the
- *    process is terminated (std::terminate). Where threads are scarce, set
- *    DBS_OPT_THREADS to 1.
+ *    thread limit) is not an error (since 0.3): its share of the work runs on the calling
+ *    thread, with the same result, only more slowly. (0.2 failed the call with
+ *    DBS_ERR_INTERNAL, or terminated the process when other workers were running.)
  *
  * Lifetimes:
  *

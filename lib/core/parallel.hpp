@@ -1,11 +1,14 @@
 // A minimal deterministic parallel loop: [0, n) cut into contiguous chunks, one per thread.
 // Each index is processed exactly once and writes only its own outputs, so results never
-// depend on the thread count. The first exception thrown by a worker is rethrown.
+// depend on the thread count. The first exception thrown by a worker is rethrown. When the
+// system cannot start a thread (std::system_error, e.g. a process at its thread limit), the
+// chunks that did not get one run on the calling thread: the result is the same, only slower.
 #pragma once
 #include <algorithm>
 #include <cstddef>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -29,17 +32,24 @@ void parallel_for(std::size_t n, int threads, F&& body) {
   std::mutex error_mutex;
   std::vector<std::thread> pool;
   pool.reserve(workers);
-  for (std::size_t w = 0; w < workers; ++w) {
-    std::size_t begin = n * w / workers, end = n * (w + 1) / workers;
-    pool.emplace_back([&, begin, end] {
-      try {
-        for (std::size_t i = begin; i < end; ++i) body(i);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(error_mutex);
-        if (!error) error = std::current_exception();
-      }
-    });
+  auto chunk = [&](std::size_t begin, std::size_t end) {
+    try {
+      for (std::size_t i = begin; i < end; ++i) body(i);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(error_mutex);
+      if (!error) error = std::current_exception();
+    }
+  };
+  std::size_t started = 0;
+  for (; started < workers; ++started) {
+    const std::size_t begin = n * started / workers, end = n * (started + 1) / workers;
+    try {
+      pool.emplace_back(chunk, begin, end);
+    } catch (const std::system_error&) {
+      break;  // no more threads: the rest runs here
+    }
   }
+  for (std::size_t w = started; w < workers; ++w) chunk(n * w / workers, n * (w + 1) / workers);
   for (std::thread& t : pool) t.join();
   if (error) std::rethrow_exception(error);
 }
