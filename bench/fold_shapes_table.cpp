@@ -1,0 +1,207 @@
+// The fold table of the fold-free work (issue 10): the analytic hard shapes of
+// tests/support/fold_shapes.hpp (known parameters, reference triangles used only for scoring)
+// parameterized by dbs_parameterize through the public C API with default options, and by the
+// meshless reference (Floater-Reimers, k = 12 inverse-distance weights, one sparse solve).
+//
+// Columns: points; reference triangles; quadtree levels and patches; folded reference
+// triangles (signed (u,v) area negative or below 1e-3 of the median: inverted + collapsed) and
+// their share; the reference-free fold measure of the library (DBS_STAT_FOLDED_POINTS and
+// _SHARE, "n/a" with a dbs.h or library older than 0.3); mean point-to-surface distance and the
+// target used (DBS_STAT_ACCURACY); the result surface's distance to the truth, mean over the
+// points of dist(S(u_i,v_i), noise-free surface); wall time of dbs_parameterize; then the same
+// reference folds and time for the meshless reference.
+//
+// usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N]
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "dbs.h"
+#include "fold_shapes.hpp"
+#include "meshless_reference.hpp"
+
+namespace {
+
+using dbs_folds::FoldCount;
+using dbs_folds::FoldShape;
+
+[[noreturn]] void usage_error(const std::string& message) {
+  std::fprintf(stderr, "dbs-bench-folds: %s\nusage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N]\nshapes:", message.c_str());
+  for (const std::string& name : dbs_folds::fold_shape_names()) std::fprintf(stderr, " %s", name.c_str());
+  std::fprintf(stderr, "\n");
+  std::exit(2);
+}
+
+int parse_int(const std::string& option, const std::string& text) {
+  char* end = nullptr;
+  long value = std::strtol(text.c_str(), &end, 10);
+  if (end == text.c_str() || *end != '\0' || value < 0 || value > 1000) usage_error(option + ": '" + text + "' is not a small non-negative integer");
+  return static_cast<int>(value);
+}
+
+struct Settings {
+  std::vector<std::string> shapes = dbs_folds::fold_shape_names();
+  int threads = -1;    // -1: the library's default
+  int max_level = -1;  // -1: the library's default
+};
+
+Settings parse_arguments(int argc, char** argv) {
+  Settings settings;
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") usage_error("folds of dbs_parameterize on the analytic hard shapes");
+    if (i + 1 >= argc) usage_error(arg + (arg.rfind("--", 0) == 0 ? " needs a value" : ": unknown argument"));
+    std::string value = argv[++i];
+    if (arg == "--shape") {
+      settings.shapes.clear();
+      std::stringstream list(value);
+      std::string item;
+      const std::vector<std::string> known = dbs_folds::fold_shape_names();
+      while (std::getline(list, item, ',')) {
+        bool found = false;
+        for (const std::string& name : known) found = found || name == item;
+        if (!found) usage_error("--shape: unknown shape '" + item + "'");
+        settings.shapes.push_back(item);
+      }
+      if (settings.shapes.empty()) usage_error("--shape needs at least one shape");
+    } else if (arg == "--threads") {
+      settings.threads = parse_int(arg, value);
+    } else if (arg == "--max-level") {
+      settings.max_level = parse_int(arg, value);
+    } else {
+      usage_error("unknown option '" + arg + "'");
+    }
+  }
+  return settings;
+}
+
+std::string percent(const FoldCount& count) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f%%", 100.0 * count.share);
+  return text;
+}
+
+std::string folds(const FoldCount& count) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%zu (%zu+%zu)", count.folded, count.inverted, count.collapsed);
+  return text;
+}
+
+/// One row for dbs_parameterize; false (and the message in `error`) when a call failed.
+struct Run {
+  bool ok = false;
+  std::string error;
+  FoldCount folds;
+  double levels = 0, patches = 0, mean_distance = 0, accuracy = 0, to_truth = 0, seconds = 0;
+  std::string reference_free = "n/a";  // the library's own fold measure, points (share)
+};
+
+double stat(const dbs_result* result, int32_t id) {
+  double value = std::nan("");
+  dbs_result_stat(result, id, &value);
+  return value;
+}
+
+Run run_dbs(const FoldShape& shape, const dbs_options* options) {
+  Run run;
+  const std::size_t per_side = shape.bottom.size() / 3;
+  dbs_cloud* cloud = nullptr;
+  dbs_boundary* boundary = nullptr;
+  dbs_result* result = nullptr;
+  int status = dbs_cloud_create(shape.xyz.data(), shape.count(), &cloud);
+  if (status == DBS_OK) {
+    status = dbs_boundary_create(shape.bottom.data(), per_side, shape.right.data(), shape.right.size() / 3, shape.top.data(), shape.top.size() / 3,
+                                 shape.left.data(), shape.left.size() / 3, &boundary);
+  }
+  if (status == DBS_OK) {
+    const auto start = std::chrono::steady_clock::now();
+    status = dbs_parameterize(cloud, boundary, options, &result);
+    run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  std::vector<double> uv(2 * shape.count()), on_surface(3 * shape.count());
+  if (status == DBS_OK) status = dbs_result_uv(result, uv.data(), shape.count());
+  for (std::size_t i = 0; status == DBS_OK && i < shape.count(); ++i) status = dbs_result_evaluate(result, uv[2 * i], uv[2 * i + 1], &on_surface[3 * i], nullptr);
+  if (status != DBS_OK) {
+    run.error = std::string(dbs_status_string(status)) + ": " + dbs_last_error_message();
+  } else {
+    run.ok = true;
+    run.folds = dbs_folds::fold_share(uv, shape.triangles);
+    run.levels = stat(result, DBS_STAT_LEVELS);
+    run.patches = stat(result, DBS_STAT_PATCHES);
+    run.mean_distance = stat(result, DBS_STAT_MEAN_DISTANCE);
+    run.accuracy = stat(result, DBS_STAT_ACCURACY);
+    run.to_truth = dbs_folds::mean_distance_to_surface(shape, on_surface);
+#ifdef DBS_STAT_FOLDED_SHARE
+    double points = 0.0, share = 0.0;
+    if (dbs_result_stat(result, DBS_STAT_FOLDED_POINTS, &points) == DBS_OK && dbs_result_stat(result, DBS_STAT_FOLDED_SHARE, &share) == DBS_OK) {
+      char text[64];
+      std::snprintf(text, sizeof text, "%.0f (%.2f%%)", points, 100.0 * share);
+      run.reference_free = text;
+    }
+#endif
+  }
+  dbs_result_destroy(result);
+  dbs_boundary_destroy(boundary);
+  dbs_cloud_destroy(cloud);
+  return run;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Settings settings = parse_arguments(argc, argv);
+  dbs_options* options = nullptr;
+  if (dbs_options_create(&options) != DBS_OK) {
+    std::fprintf(stderr, "dbs-bench-folds: dbs_options_create failed: %s\n", dbs_last_error_message());
+    return EXIT_FAILURE;
+  }
+  if (settings.threads >= 0) dbs_options_set_int(options, DBS_OPT_THREADS, settings.threads);
+  if (settings.max_level >= 0) dbs_options_set_int(options, DBS_OPT_MAX_LEVEL, settings.max_level);
+  int32_t max_level = 0, threads = 0;
+  double relative_accuracy = 0.0;
+  dbs_options_get_int(options, DBS_OPT_MAX_LEVEL, &max_level);
+  dbs_options_get_int(options, DBS_OPT_THREADS, &threads);
+  dbs_options_get_double(options, DBS_OPT_RELATIVE_ACCURACY, &relative_accuracy);
+
+  std::printf("libdbs %s, max level %d, relative accuracy %g, threads %s\n", dbs_version_string(), max_level, relative_accuracy,
+              threads == 0 ? "all" : std::to_string(threads).c_str());
+  std::printf("folds: reference triangles whose signed (u,v) area is negative or below 1e-3 of the median, as inverted+collapsed;\n"
+              "to truth: mean distance of the result surface at each point's (u,v) to the noise-free surface\n\n");
+  std::printf("| shape | points | triangles | levels | patches | folds | folds %% | ref.-free folds | mean distance | target | to truth | time (s) | meshless folds | meshless %% | meshless time (s) |\n");
+  std::printf("|-------|-------:|----------:|-------:|--------:|------:|--------:|----------------:|--------------:|-------:|---------:|---------:|---------------:|-----------:|------------------:|\n");
+  std::fflush(stdout);
+  int failures = 0;
+  for (const std::string& name : settings.shapes) {
+    const FoldShape shape = dbs_folds::fold_shape(name);
+    const Run run = run_dbs(shape, options);
+    std::string meshless_folds = "n/a", meshless_share = "n/a", meshless_time = "n/a";
+    try {
+      const dbs_folds::MeshlessReference reference = dbs_folds::meshless_reference(shape);
+      const FoldCount count = dbs_folds::fold_share(reference.uv, shape.triangles);
+      meshless_folds = folds(count);
+      meshless_share = percent(count);
+      char text[32];
+      std::snprintf(text, sizeof text, "%.2f", reference.seconds);
+      meshless_time = text;
+    } catch (const std::exception& e) {
+      meshless_folds = std::string("error: ") + e.what();
+    }
+    if (run.ok) {
+      std::printf("| %s | %zu | %zu | %.0f | %.0f | %s | %s | %s | %.3g | %.3g | %.3g | %.2f | %s | %s | %s |\n", shape.name.c_str(), shape.count(), shape.triangle_count(),
+                  run.levels, run.patches, folds(run.folds).c_str(), percent(run.folds).c_str(), run.reference_free.c_str(), run.mean_distance, run.accuracy, run.to_truth, run.seconds,
+                  meshless_folds.c_str(), meshless_share.c_str(), meshless_time.c_str());
+    } else {
+      ++failures;
+      std::printf("| %s | %zu | %zu | error: %s | | | | | | | | %.2f | %s | %s | %s |\n", shape.name.c_str(), shape.count(), shape.triangle_count(), run.error.c_str(),
+                  run.seconds, meshless_folds.c_str(), meshless_share.c_str(), meshless_time.c_str());
+    }
+    std::fflush(stdout);
+  }
+  dbs_options_destroy(options);
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
