@@ -46,7 +46,8 @@ consume() {
 
   echo "consumer_check: [$name] find_package(dbs) + dbs::dbs"
   rm -rf "$work/cmake-$name"
-  cmake -S "$repo/tests/consumer" -B "$work/cmake-$name" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake -S "$repo/tests/consumer" -B "$work/cmake-$name" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
+    -DDBS_REQUIRED_VERSION="$version" >/dev/null
   cmake --build "$work/cmake-$name" >/dev/null
   "$work/cmake-$name/consumer"
 
@@ -61,6 +62,8 @@ consume() {
 }
 
 mkdir -p "$work"
+# major.minor of this tree: what an outside project asks find_package(dbs) for
+version="$(sed -n 's/^project(dbs VERSION \([0-9]*\.[0-9]*\).*/\1/p' "$repo/CMakeLists.txt")"
 
 install_libdbs shared -DDBS_BUILD_SHARED=ON
 consume shared
