@@ -1,0 +1,416 @@
+#include "fold_measure.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <queue>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include "cloud_index.hpp"
+#include "error.hpp"
+#include "parallel.hpp"
+
+namespace dbs {
+
+using namespace fold;
+
+namespace {
+
+constexpr std::uint32_t kNoNeighbour = std::numeric_limits<std::uint32_t>::max();
+constexpr double kTornWeight = 2.0;  // above any untorn edge's 1 - |n_i.n_j| <= 1 - kMinEdgeCosine
+
+/// What the local analysis of one point found.
+struct Local {
+  Vec3 normal = Vec3::Zero();  // PCA normal (unoriented); e1 x e2 = normal for the sign below
+  bool surface_like = false;   // takes part in the orientation graph
+  std::int8_t sign = 0;        // sign(det J) against `normal`; 0 = undecided
+  double abs_det = 0.0;        // |det J| when sign != 0
+  double stretch = 0.0;        // median |(du,dv)| / |dp| over the neighbours; 0 = unknown
+};
+
+/// Eigenvalues (ascending) of the symmetric 2x2 [a b; b c].
+std::pair<double, double> eigen2(double a, double b, double c) {
+  const double mean = 0.5 * (a + c), half = 0.5 * (a - c);
+  const double r = std::hypot(half, b);
+  return {mean - r, mean + r};
+}
+
+/// The cloud indexed whole (level 0) and thinned to every 4^k-th point (level k), so that a
+/// wide neighbourhood costs about kMaxNeighbourhood points whatever its radius.
+class Levels {
+ public:
+  Levels(const std::vector<Vec3>& points, const CloudIndex& whole) : whole_(whole) {
+    for (std::size_t stride = 4; points.size() / stride >= kMaxNeighbourhood; stride *= 4) {
+      std::vector<std::size_t> subset;
+      for (std::size_t i = 0; i < points.size(); i += stride) subset.push_back(i);
+      thinned_.push_back(std::make_unique<CloudIndex>(points, std::move(subset)));
+      strides_.push_back(stride);
+    }
+  }
+
+  /// Points within `radius` of points[i] (i itself included once), ascending by index; about
+  /// kMaxNeighbourhood at most. `expected` estimates how many the whole cloud holds there; the
+  /// search starts one level coarser than that suggests and goes finer while it finds fewer
+  /// than a quarter of kMaxNeighbourhood; what it finds is then thinned evenly by index.
+  void within(std::size_t i, double radius, double expected, std::vector<std::size_t>& out) const {
+    const Vec3& p = whole_.points()[i];
+    const double enough = 0.25 * static_cast<double>(kMaxNeighbourhood);
+    std::size_t level = 0;
+    while (level < strides_.size() && expected / static_cast<double>(strides_[level]) > static_cast<double>(kMaxNeighbourhood)) ++level;
+    level = std::min(level + 1, strides_.size());
+    for (;; --level) {
+      (level == 0 ? whole_ : *thinned_[level - 1]).radius(p, radius, out);
+      if (level == 0 || static_cast<double>(out.size()) >= enough) break;
+    }
+    out.push_back(i);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    const std::size_t m = out.size();
+    if (m > kMaxNeighbourhood) {
+      std::size_t kept = 0;
+      bool has_i = false;
+      for (std::size_t t = 0; t < kMaxNeighbourhood; ++t) {
+        out[kept] = out[t * m / kMaxNeighbourhood];
+        has_i = has_i || out[kept] == i;
+        ++kept;
+      }
+      out.resize(kept);
+      if (!has_i) out.insert(std::lower_bound(out.begin(), out.end(), i), i);
+    }
+  }
+
+ private:
+  const CloudIndex& whole_;
+  std::vector<std::unique_ptr<CloudIndex>> thinned_;
+  std::vector<std::size_t> strides_;
+};
+
+/// One neighbour of the point being analysed.
+struct Neighbour {
+  Vec3 d;        // position relative to the point
+  double du, dv;  // parameters relative to the point's
+  double ratio;   // |(du,dv)| / |d|; infinite for a duplicate point elsewhere in (u,v)
+};
+
+/// PCA frame and the sign of the local linear map to (u,v) at point i.
+Local analyse(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, std::size_t i, const std::vector<std::size_t>& nb,
+              std::vector<Neighbour>& near, std::vector<double>& ratios) {
+  Local out;
+  if (nb.size() < 4) return out;
+  // Tears: neighbours much farther in (u,v) than their distance suggests (the other side of a
+  // thin flap, a seam, a flipped patch's rim) are left out of the frame and the fit. The
+  // typical stretch is a low quantile, so that up to most of the neighbours may be torn.
+  const Vec3& p = points[i];
+  near.clear();
+  ratios.clear();
+  for (std::size_t j : nb) {
+    if (j == i) continue;
+    Neighbour q{points[j] - p, u[j] - u[i], v[j] - v[i], 0.0};
+    const double dp = q.d.norm(), duv = std::sqrt(q.du * q.du + q.dv * q.dv);
+    if (dp > 0.0) {
+      q.ratio = duv / dp;
+      ratios.push_back(q.ratio);
+    } else if (duv > 0.0) {
+      q.ratio = std::numeric_limits<double>::infinity();
+    } else {
+      continue;  // a duplicate with the same (u,v): no information
+    }
+    near.push_back(q);
+  }
+  double tear = std::numeric_limits<double>::infinity();
+  if (ratios.size() >= 4) {
+    const auto at = ratios.begin() + static_cast<std::ptrdiff_t>(static_cast<double>(ratios.size() - 1) * kStretchQuantile);
+    std::nth_element(ratios.begin(), at, ratios.end());
+    out.stretch = *at;
+    if (out.stretch > 0.0) tear = kTearRatio * out.stretch;
+  }
+  // The frame: PCA over the point and its untorn neighbours (all of them without a stretch).
+  Vec3 centroid = Vec3::Zero();
+  std::size_t untorn = 0;
+  for (const Neighbour& q : near)
+    if (q.ratio <= tear) centroid += q.d, ++untorn;
+  if (untorn + 1 < 4) return out;
+  centroid /= static_cast<double>(untorn + 1);  // p itself sits at d = 0
+  Eigen::Matrix3d cov = centroid * centroid.transpose();
+  for (const Neighbour& q : near)
+    if (q.ratio <= tear) {
+      const Vec3 d = q.d - centroid;
+      cov.noalias() += d * d.transpose();
+    }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  if (eig.info() != Eigen::Success) return out;
+  const Vec3 lambda = eig.eigenvalues();  // ascending
+  if (!(lambda[1] > 0.0) || lambda[0] > kMaxFlatness * lambda[1]) return out;
+  out.normal = eig.eigenvectors().col(0);
+  out.surface_like = true;
+  if (!(out.stretch > 0.0)) return out;  // collapsed: most neighbours share the point's (u,v)
+  const Vec3 e1 = eig.eigenvectors().col(2);
+  const Vec3 e2 = out.normal.cross(e1);
+
+  // Least squares duv = J xy over the kept neighbours, relative to the point.
+  double axx = 0, axy = 0, ayy = 0;          // A = sum xy xy^T
+  double bux = 0, buy = 0, bvx = 0, bvy = 0;  // B = sum duv xy^T
+  double total = 0;                            // sum |duv|^2
+  std::size_t kept = 0;
+  for (Neighbour& q : near) {
+    if (!(q.ratio <= tear)) continue;
+    const double x = q.d.dot(e1), y = q.d.dot(e2);
+    q.d.x() = x, q.d.y() = y;  // tangent coordinates, for the residual below
+    axx += x * x, axy += x * y, ayy += y * y;
+    bux += q.du * x, buy += q.du * y, bvx += q.dv * x, bvy += q.dv * y;
+    total += q.du * q.du + q.dv * q.dv;
+    ++kept;
+  }
+  if (kept < 6 || !(total > 0.0)) return out;
+  const auto [a_min, a_max] = eigen2(axx, axy, ayy);
+  if (!(a_min > kMinSpread * a_max)) return out;
+  const double det_a = axx * ayy - axy * axy;
+  // J = B A^-1
+  const double j11 = (bux * ayy - buy * axy) / det_a, j12 = (buy * axx - bux * axy) / det_a;
+  const double j21 = (bvx * ayy - bvy * axy) / det_a, j22 = (bvy * axx - bvx * axy) / det_a;
+  double residual = 0;
+  for (const Neighbour& q : near) {
+    if (!(q.ratio <= tear)) continue;
+    const double x = q.d.x(), y = q.d.y();
+    const double ru = q.du - (j11 * x + j12 * y), rv = q.dv - (j21 * x + j22 * y);
+    residual += ru * ru + rv * rv;
+  }
+  if (residual > kMaxResidual * total) return out;
+  const double det = j11 * j22 - j12 * j21;
+  const double frob2 = j11 * j11 + j12 * j12 + j21 * j21 + j22 * j22;
+  const double s_max = std::sqrt(0.5 * (frob2 + std::sqrt(std::max(0.0, frob2 * frob2 - 4.0 * det * det))));
+  if (!(s_max > 0.0)) return out;
+  const double s_min = std::abs(det) / s_max;
+  // Standard error of J's entries along the least constrained tangent direction.
+  const double sigma_r = std::sqrt(residual / (2.0 * static_cast<double>(kept - 2)));
+  const double stderr_j = sigma_r / std::sqrt(a_min);
+  if (s_min <= s_max / kMaxCondition || s_min <= kSignificance * stderr_j) return out;
+  out.sign = det > 0.0 ? 1 : -1;
+  out.abs_det = std::abs(det);
+  return out;
+}
+
+/// Orientation of the normals: Prim's minimum spanning tree over the surface-like points of
+/// the graph, weight 1 - |n_i.n_j|, each component from its lowest index. A torn edge (its
+/// |(du,dv)| / |dp| above kTearRatio x the larger stretch of its ends) weighs kTornWeight more,
+/// so the normals follow the parameterization's continuous paths where it has them (around a
+/// thin flap rather than across it) and cross a tear only to reach what nothing else reaches.
+/// out_orient[i] is +1 or -1 (0 for a point outside the graph), out_component[i] the
+/// component (or kNoNeighbour).
+void orient(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, const std::vector<Local>& local, const std::vector<std::uint32_t>& graph, std::vector<std::int8_t>& out_orient,
+            std::vector<std::uint32_t>& out_component, std::uint32_t& out_components) {
+  const std::size_t n = local.size();
+  // Kept edges of each point's nearest, both directions, then per point sorted and unique.
+  auto keep = [&](std::size_t i, std::uint32_t j) {
+    if (!local[j].surface_like) return false;
+    const Vec3& ni = local[i].normal;
+    const Vec3& nj = local[j].normal;
+    if (std::abs(ni.dot(nj)) < kMinEdgeCosine) return false;
+    const Vec3 d = (points[j] - points[i]).normalized();
+    return std::abs(ni.dot(d)) <= kMaxEdgeNormalCosine && std::abs(nj.dot(d)) <= kMaxEdgeNormalCosine;
+  };
+  std::vector<std::uint8_t> kept(graph.size(), 0);
+  std::vector<std::size_t> start(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!local[i].surface_like) continue;
+    for (std::size_t t = 0; t < kGraphNeighbours; ++t) {
+      const std::uint32_t j = graph[i * kGraphNeighbours + t];
+      if (j == kNoNeighbour) break;
+      if (keep(i, j)) kept[i * kGraphNeighbours + t] = 1, ++start[i + 1], ++start[j + 1];
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+  std::vector<std::uint32_t> adjacent(start[n]);
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t t = 0; t < kGraphNeighbours; ++t)
+      if (kept[i * kGraphNeighbours + t]) {
+        const std::uint32_t j = graph[i * kGraphNeighbours + t];
+        adjacent[fill[i]++] = j, adjacent[fill[j]++] = static_cast<std::uint32_t>(i);
+      }
+  std::vector<std::size_t> end(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto first = adjacent.begin() + static_cast<std::ptrdiff_t>(start[i]), last = adjacent.begin() + static_cast<std::ptrdiff_t>(start[i + 1]);
+    std::sort(first, last);
+    end[i] = start[i] + static_cast<std::size_t>(std::unique(first, last) - first);
+  }
+
+  out_orient.assign(n, 0);
+  out_component.assign(n, kNoNeighbour);
+  out_components = 0;
+  using Item = std::tuple<double, std::uint32_t, std::uint32_t>;  // weight, to, from
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+  auto push_edges = [&](std::uint32_t from) {
+    for (std::size_t e = start[from]; e < end[from]; ++e) {
+      const std::uint32_t to = adjacent[e];
+      if (out_orient[to] != 0) continue;
+      double w = 1.0 - std::abs(local[from].normal.dot(local[to].normal));
+      const double stretch = std::max(local[from].stretch, local[to].stretch);
+      const double du = u[to] - u[from], dv = v[to] - v[from];
+      const Vec3 d = points[to] - points[from];
+      if (stretch > 0.0 && std::sqrt(du * du + dv * dv) > kTearRatio * stretch * d.norm()) w += kTornWeight;
+      heap.emplace(w, to, from);
+    }
+  };
+  for (std::size_t s = 0; s < n; ++s) {
+    if (!local[s].surface_like || out_orient[s] != 0) continue;
+    const std::uint32_t component = out_components++;
+    out_orient[s] = 1;
+    out_component[s] = component;
+    push_edges(static_cast<std::uint32_t>(s));
+    while (!heap.empty()) {
+      const auto [w, to, from] = heap.top();
+      heap.pop();
+      (void)w;
+      if (out_orient[to] != 0) continue;
+      const double agree = (static_cast<double>(out_orient[from]) * local[from].normal).dot(local[to].normal);
+      out_orient[to] = agree >= 0.0 ? 1 : -1;
+      out_component[to] = component;
+      push_edges(to);
+    }
+  }
+}
+
+void check_sizes(std::size_t points, const std::vector<double>& u, const std::vector<double>& v, const char* what) {
+  if (u.size() != points || v.size() != points)
+    fail(ErrorCode::InvalidArgument, std::string(what) + ": " + std::to_string(points) + " points but " + std::to_string(u.size()) + " u and " + std::to_string(v.size()) + " v values");
+}
+
+}  // namespace
+
+std::size_t count_coincident(const std::vector<double>& u, const std::vector<double>& v) {
+  check_sizes(u.size(), u, v, "count_coincident");
+  const std::size_t n = u.size();
+  // Sorted by (cell of u, v, index), cells kCoincident wide: a partner of (u,v) lies in the
+  // cells from cell(u - eps) to cell(u + eps) (floor and division are monotonic), within
+  // v +- eps there.
+  auto cell = [](double x) { return std::floor(x / kCoincident); };
+  std::vector<std::tuple<double, double, std::size_t>> keys(n);
+  for (std::size_t i = 0; i < n; ++i) keys[i] = {cell(u[i]), v[i], i};
+  std::sort(keys.begin(), keys.end());
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    bool found = false;
+    const double c_hi = cell(u[i] + kCoincident);
+    for (double c = cell(u[i] - kCoincident); c <= c_hi && !found;) {
+      auto it = std::lower_bound(keys.begin(), keys.end(), std::make_tuple(c, v[i] - kCoincident, std::size_t{0}));
+      for (; it != keys.end() && std::get<0>(*it) == c && std::get<1>(*it) <= v[i] + kCoincident; ++it) {
+        const std::size_t j = std::get<2>(*it);
+        if (j != i && std::abs(u[j] - u[i]) <= kCoincident && std::abs(v[j] - v[i]) <= kCoincident) {
+          found = true;
+          break;
+        }
+      }
+      const double next = c + 1.0;
+      if (!(next > c)) break;  // |u| beyond 2^53 cells: one cell holds every partner
+      c = next;
+    }
+    if (found) ++count;
+  }
+  return count;
+}
+
+FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, double noise_sigma, int threads) {
+  check_sizes(points.size(), u, v, "measure_folds");
+  if (!std::isfinite(noise_sigma)) fail(ErrorCode::NonFinite, "measure_folds: the noise level is not finite");
+  if (noise_sigma < 0.0) fail(ErrorCode::InvalidArgument, "measure_folds: the noise level " + std::to_string(noise_sigma) + " is negative");
+  const std::size_t n = points.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_finite(points[i])) fail(ErrorCode::NonFinite, "measure_folds: point " + std::to_string(i) + " is not finite");
+    if (!std::isfinite(u[i]) || !std::isfinite(v[i])) fail(ErrorCode::NonFinite, "measure_folds: the (u,v) of point " + std::to_string(i) + " is not finite");
+  }
+
+  FoldMeasure m;
+  m.points = n;
+  m.state.assign(n, kFoldUndecided);
+  m.coincident = count_coincident(u, v);
+  m.undecided = n;
+  if (n < 4) return m;
+
+  const CloudIndex index(points);
+  double spacing = 0.0;
+  try {
+    spacing = cloud_spacing(index);
+  } catch (const Error& e) {
+    if (e.code() != ErrorCode::Degenerate) throw;
+    return m;  // fewer than two distinct points
+  }
+  const double radius = std::max(kSpacingRadius * spacing, kNoiseRadius * noise_sigma);
+  const int workers = resolve_threads(threads);
+
+  // 1. Local frames and signs, and the orientation graph's edges (each point's nearest).
+  std::vector<Local> local(n);
+  std::vector<std::uint32_t> graph(n * kGraphNeighbours, kNoNeighbour);
+  const Levels levels(points, index);
+  const std::size_t chunks = std::min<std::size_t>(static_cast<std::size_t>(workers), n);
+  parallel_for(chunks, workers, [&](std::size_t c) {
+    std::vector<std::size_t> nb;
+    std::vector<double> d2, ratios;
+    std::vector<Neighbour> near;
+    for (std::size_t i = n * c / chunks; i < n * (c + 1) / chunks; ++i) {
+      index.knn(points[i], kNeighbours, nb, d2);
+      std::size_t t = 0;
+      for (std::size_t j : nb) {  // nearest first
+        if (t == kGraphNeighbours) break;
+        if (j != i && points[j] != points[i]) graph[i * kGraphNeighbours + t++] = static_cast<std::uint32_t>(j);
+      }
+      // The k nearest, or every point within the radius when that reaches farther.
+      const double knn_reach = std::sqrt(d2.back()), reach = std::max(knn_reach, radius);
+      // Points expected within r, from the k nearest on a surface (~r^2; more in a thick cloud).
+      auto expected = [&](double r) { return knn_reach > 0.0 ? static_cast<double>(kNeighbours) * (r / knn_reach) * (r / knn_reach) : 0.0; };
+      if (radius > knn_reach) levels.within(i, radius, expected(radius), nb);
+      local[i] = analyse(points, u, v, i, nb, near, ratios);
+      if (!local[i].surface_like && reach > 0.0) {
+        // One-sided (at a border) or noisy for its size: once more over kRetryRadius x the reach.
+        levels.within(i, kRetryRadius * reach, expected(kRetryRadius * reach), nb);
+        local[i] = analyse(points, u, v, i, nb, near, ratios);
+      }
+    }
+  });
+
+  // 2. Maps squeezed far below the typical |det J| are not judged.
+  std::vector<double> dets;
+  for (const Local& l : local)
+    if (l.sign != 0) dets.push_back(l.abs_det);
+  if (!dets.empty()) {
+    std::nth_element(dets.begin(), dets.begin() + static_cast<std::ptrdiff_t>(dets.size() / 2), dets.end());
+    const double floor = kMinDetShare * dets[dets.size() / 2];
+    for (Local& l : local)
+      if (l.sign != 0 && l.abs_det < floor) l.sign = 0;
+  }
+
+  // 3. Consistent normals, then each component's majority sign is the right one.
+  std::vector<std::int8_t> orientation;
+  std::vector<std::uint32_t> component;
+  std::uint32_t components = 0;
+  orient(points, u, v, local, graph, orientation, component, components);
+  std::vector<std::int64_t> balance(components, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    if (local[i].sign != 0 && orientation[i] != 0) balance[component[i]] += local[i].sign * orientation[i];
+  m.undecided = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const int sign = local[i].sign * orientation[i];
+    const std::int64_t b = sign == 0 ? 0 : balance[component[i]];
+    if (sign == 0 || b == 0) {
+      m.state[i] = kFoldUndecided;
+      ++m.undecided;
+    } else if ((sign > 0) == (b > 0)) {
+      m.state[i] = kFoldOk;
+    } else {
+      m.state[i] = kFolded;
+      ++m.folded;
+    }
+  }
+  const std::size_t decided = n - m.undecided;
+  m.folded_share = decided == 0 ? 0.0 : static_cast<double>(m.folded) / static_cast<double>(decided);
+  return m;
+}
+
+}  // namespace dbs

@@ -1,0 +1,86 @@
+// A fold measure that needs no connectivity and trusts no surface: it judges a
+// parameterization (u,v) of an unorganized cloud from the cloud alone.
+//
+// For every point: its neighbourhood (the kNeighbours nearest, widened to every point within
+// max(kSpacingRadius x spacing, kNoiseRadius x sigma), at most kMaxNeighbourhood of them; one
+// that is not surface-like, as at a border of the cloud, is tried once kRetryRadius x wider).
+// Neighbours torn from the point in (u,v) (|duv|/|dp| above kTearRatio x the point's stretch,
+// a low quantile of that ratio: the far side of a thin flap, a seam, a flipped patch's rim)
+// are left out. Over the rest: a tangent frame by PCA (the eigenvector of the smallest
+// eigenvalue is the normal) and the least-squares 2x2 linear map J from the neighbours'
+// tangent coordinates (relative to the point) to their (du,dv). The normals are oriented
+// consistently by Hoppe's minimum spanning tree over the kNN graph (weight 1 - |n_i.n_j|, torn
+// edges heavier than any other, edges only between similar normals and along both tangent
+// planes; Prim from the lowest unvisited index, ties by index), so a point's orientation is
+// sign(det J) against that oriented normal. In each connected component of the graph the sign
+// of the majority of its decided points is "right" (the normals of two components are oriented
+// independently, so no sign is comparable across them); points of the other sign are folded.
+// A globally mirrored (u,v) therefore folds nothing. The (u,v) only choose which neighbours
+// count; normals come from the cloud alone, no surface is consulted.
+//
+// A point is undecided (never folded) when its neighbourhood is not surface-like, its
+// neighbours do not constrain J, J explains less than half of the (du,dv), the sign of J is
+// not significant (its smallest singular value below 1e-3 of the largest or within 3 standard
+// errors of 0), |det J| is below 1e-3 of the median, or its component has no majority.
+// Folds are seen at the neighbourhood's scale (a few spacings): jitter of single points in
+// (u,v) is not a fold here. Two sheets closer than about 3 spacings (an undersampled flap)
+// cannot be told apart from one and may be misjudged.
+//
+// Deterministic and bit-identical for any thread count; invariant to a uniform scale and a
+// rigid motion of the cloud with sigma (only ratios to the spacing and to sigma are used).
+// O(N (k + m) log N) for k = kNeighbours and m = kMaxNeighbourhood: a neighbourhood wider than
+// the k nearest is gathered from the cloud thinned to every 4^l-th point (the finest l that
+// yields at most about m points), so a large sigma costs at most m points per query.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "geometry.hpp"
+
+namespace dbs {
+
+/// The measure's fixed settings (ratios only, so the measure is scale-invariant).
+namespace fold {
+constexpr std::size_t kNeighbours = 16;          ///< nearest points of a neighbourhood (the point included)
+constexpr double kSpacingRadius = 3.0;           ///< neighbourhood radius at least this x the cloud spacing
+constexpr double kNoiseRadius = 6.0;             ///< ... and at least this x sigma
+constexpr std::size_t kMaxNeighbourhood = 128;   ///< larger neighbourhoods are thinned evenly by index
+constexpr double kRetryRadius = 2.0;             ///< a neighbourhood not surface-like is tried once this x wider
+constexpr std::size_t kGraphNeighbours = 10;     ///< nearest points joined in the orientation graph
+constexpr double kMaxFlatness = 0.3;             ///< surface-like: lambda_min <= this x lambda_mid
+constexpr double kMinEdgeCosine = 0.5;           ///< graph edge only between normals within 60 degrees
+constexpr double kMaxEdgeNormalCosine = 0.5;     ///< ... and whose direction is within 30 degrees of both tangent planes
+constexpr double kStretchQuantile = 0.25;        ///< a point's stretch: this quantile of its neighbours' |duv|/|dp|
+constexpr double kTearRatio = 4.0;               ///< neighbour torn: |duv|/|dp| above this x the stretch
+constexpr double kMinSpread = 1e-2;              ///< tangent coordinates: smallest / largest moment
+constexpr double kMaxResidual = 0.5;             ///< J must explain at least half of sum |duv|^2
+constexpr double kMaxCondition = 1e3;            ///< singular values of J
+constexpr double kSignificance = 3.0;            ///< smallest singular value in standard errors
+constexpr double kMinDetShare = 1e-3;            ///< |det J| relative to the median
+constexpr double kCoincident = 1e-12;            ///< (u,v) tolerance of count_coincident
+}  // namespace fold
+
+/// Per-point verdicts of measure_folds().
+enum : std::int8_t { kFoldOk = 1, kFoldUndecided = 0, kFolded = -1 };
+
+struct FoldMeasure {
+  std::size_t points = 0;      ///< number of points judged
+  std::size_t folded = 0;      ///< points whose neighbourhood is mapped with reversed orientation
+  std::size_t undecided = 0;   ///< points whose orientation could not be decided (not counted as folded)
+  std::size_t coincident = 0;  ///< points sharing one (u,v) with another point (see count_coincident)
+  double folded_share = 0.0;   ///< folded / (points - undecided); 0 when no point is decided
+  std::vector<std::int8_t> state;  ///< per point: kFoldOk (+1), kFolded (-1), kFoldUndecided (0)
+};
+
+/// Judges the parameterization (u[i], v[i]) of points[i]. noise_sigma >= 0 is the cloud's noise
+/// level in cloud units (0: unknown or noise-free); threads as Options::threads (0 = all cores).
+/// Throws Error(InvalidArgument) when the sizes differ or noise_sigma < 0, Error(NonFinite) for
+/// a non-finite point, parameter or sigma. Fewer than 4 distinct points: all undecided.
+FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, double noise_sigma, int threads);
+
+/// Number of points i for which some j != i has |u_i - u_j| <= 1e-12 and |v_i - v_j| <= 1e-12
+/// (exact duplicates included). O(N log N). Throws Error(InvalidArgument) when the sizes differ.
+std::size_t count_coincident(const std::vector<double>& u, const std::vector<double>& v);
+
+}  // namespace dbs
