@@ -58,7 +58,7 @@ Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProj
 
   std::vector<double> offsets(grid.points.size());
   for (std::size_t k = 0; k < offsets.size(); ++k) offsets[k] = 0.5 * (row_offset[k] + column_offset[k]);
-  GuardedMove move = move_without_pleats(surface, grid, normals, offsets);
+  GuardedMove move = move_without_pleats(grid, normals, offsets);
   if (out_damped_nodes) *out_damped_nodes = move.damped_nodes;
   return std::move(move.grid);
 }

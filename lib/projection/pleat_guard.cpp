@@ -13,33 +13,12 @@ namespace {
 
 /// Rounds of halving before an offending node's offset is withdrawn.
 constexpr int kHalvingRounds = 6;
-/// A cell or sample of the moved surface may turn against the surface before the move by
-/// up to acos(kMinCosine) (just under 90 degrees): steep walls are reached in a few damped
-/// steps, a reversed sheet never.
+/// A triangle of a moved cell may turn against the cell before the move by up to
+/// acos(kMinCosine) (just under 90 degrees): steep walls are reached in a few damped steps,
+/// a reversed sheet never.
 constexpr double kMinCosine = 0.02;
-/// Rounds after the halving ones in which offending nodes are withdrawn one ring at a time.
+/// Rounds after the halving ones (offsets withdrawn) before the grid is left unmoved.
 constexpr int kWithdrawRounds = 4;
-/// Samples of the moved surface per grid cell and direction (the spline between the nodes
-/// can pleat where the nodes themselves do not).
-constexpr int kSamplesPerCell = 3;
-
-struct Sample {
-  double u, v;
-  int cell_i, cell_j;
-  Vec3 normal_before;
-};
-
-/// Normals at the samples of `surface` between the grid's nodes, with the cell each lies in.
-std::vector<Sample> surface_samples(const BaseSurface& surface, int nu, int nv) {
-  std::vector<Sample> samples;
-  const int su = (nu - 1) * kSamplesPerCell, sv = (nv - 1) * kSamplesPerCell;
-  for (int b = 1; b < sv; ++b)
-    for (int a = 1; a < su; ++a) {
-      const double u = static_cast<double>(a) / su, v = static_cast<double>(b) / sv;
-      samples.push_back({u, v, std::min(a / kSamplesPerCell, nu - 2), std::min(b / kSamplesPerCell, nv - 2), surface.normal(u, v)});
-    }
-  return samples;
-}
 
 /// True when a triangle of the moved cell turns against the cell before the move.
 bool cell_turns(const Grid& before, const Grid& after, int i, int j) {
@@ -68,7 +47,7 @@ Grid moved_grid(const Grid& start, const Grid& directions, const std::vector<dou
 
 }  // namespace
 
-GuardedMove move_without_pleats(const BaseSurface& surface, const Grid& start, const Grid& directions, const std::vector<double>& offsets) {
+GuardedMove move_without_pleats(const Grid& start, const Grid& directions, const std::vector<double>& offsets) {
   const std::size_t n = start.points.size();
   if (directions.points.size() != n || offsets.size() != n || directions.nu != start.nu || directions.nv != start.nv)
     fail(ErrorCode::InvalidArgument, "move_without_pleats: grid, directions and offsets differ in size");
@@ -77,7 +56,6 @@ GuardedMove move_without_pleats(const BaseSurface& surface, const Grid& start, c
     out.grid = start;
     return out;
   }
-  const std::vector<Sample> samples = surface_samples(surface, start.nu, start.nv);
   std::vector<double> scale(n, 1.0);
   std::vector<char> damped(n, 0);
   for (int round = 0;; ++round) {
@@ -88,18 +66,11 @@ GuardedMove move_without_pleats(const BaseSurface& surface, const Grid& start, c
       for (int i = 0; i + 1 < start.nu; ++i)
         if (cell_turns(start, moved, i, j)) offending[j * (start.nu - 1) + i] = any = true;
     if (!any) {
-      const BaseSurface after(surface.boundary(), moved);
-      for (const Sample& s : samples) {
-        char& cell = offending[s.cell_j * (start.nu - 1) + s.cell_i];
-        if (!cell && after.normal(s.u, s.v).dot(s.normal_before) < kMinCosine) cell = any = true;
-      }
-    }
-    if (!any) {
       out.grid = std::move(moved);
       break;
     }
-    // The corners of every offending cell move less; after the last round, not at all (the
-    // start grid is pleat-free, so the loop ends once every offending cell's nodes are back).
+    // The corners of every offending cell move less; after the halving rounds, not at all
+    // (a cell whose four corners are back at the start cannot turn against itself).
     const double factor = round < kHalvingRounds ? 0.5 : 0.0;
     for (int j = 0; j + 1 < start.nv; ++j)
       for (int i = 0; i + 1 < start.nu; ++i) {
@@ -112,10 +83,11 @@ GuardedMove move_without_pleats(const BaseSurface& surface, const Grid& start, c
           }
       }
     if (round > kHalvingRounds + kWithdrawRounds) {
-      // The spline through the nodes is not local: should withdrawing the offending nodes not
-      // settle it, the grid does not move at all this time.
+      // Unreachable in exact arithmetic (a cell whose corners are all back is the start's
+      // own); should rounding keep a cell turning, the grid does not move at all this time.
       out.grid = start;
-      std::fill(damped.begin(), damped.end(), 1);
+      for (int j = 1; j + 1 < start.nv; ++j)
+        for (int i = 1; i + 1 < start.nu; ++i) damped[static_cast<std::size_t>(j) * start.nu + i] = 1;
       break;
     }
   }
