@@ -47,9 +47,10 @@ double stat_value(const dbs::Result& r, int32_t stat) {
     case DBS_STAT_FOLDED_POINTS: return static_cast<double>(r.folded_points);
     case DBS_STAT_UNDECIDED_POINTS: return static_cast<double>(r.undecided_points);
     case DBS_STAT_COINCIDENT_POINTS: return static_cast<double>(r.coincident_points);
+    case DBS_STAT_JUDGED_POINTS: return static_cast<double>(r.judged_points);
     default: break;
   }
-  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_COINCIDENT_POINTS + 1) + ")");
+  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_JUDGED_POINTS + 1) + ")");
 }
 
 }  // namespace

@@ -46,6 +46,7 @@ module dbs
   integer(c_int32_t), parameter :: DBS_STAT_REQUESTED_MET = 17, DBS_STAT_NOISE = 18
   integer(c_int32_t), parameter :: DBS_STAT_FOLDED_SHARE = 19, DBS_STAT_FOLDED_POINTS = 20
   integer(c_int32_t), parameter :: DBS_STAT_UNDECIDED_POINTS = 21, DBS_STAT_COINCIDENT_POINTS = 22
+  integer(c_int32_t), parameter :: DBS_STAT_JUDGED_POINTS = 23
 
   ! ---- validation: meshes, distortion, distances ----------------------------------------
   real(c_double), parameter :: DBS_MESH_SUSPICIOUS_FACTOR = 4.0_c_double

@@ -118,10 +118,11 @@ static void statistics(void **state) {
   assert_true(result_stat(f->result, DBS_STAT_FOLDED_POINTS) == 0.0);
   assert_true(result_stat(f->result, DBS_STAT_COINCIDENT_POINTS) == 0.0);
   assert_true(result_stat(f->result, DBS_STAT_UNDECIDED_POINTS) <= 0.1 * NPOINTS);
+  assert_true(result_stat(f->result, DBS_STAT_JUDGED_POINTS) == NPOINTS); /* a small cloud: every point */
 
   double value = -7;
-  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 23)");
-  assert_failure(dbs_result_stat(f->result, 23, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 23 ");
+  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 24)");
+  assert_failure(dbs_result_stat(f->result, 24, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 24 ");
   assert_true(value == -7);
 }
 

@@ -1,0 +1,185 @@
+// The fold-free method on the hard shapes of tests/support/fold_shapes (issue 10), with the
+// default options: folded reference triangles (their signed (u,v) area negative or collapsed
+// below 1e-3 of the median), the result surface's distance to the noise-free truth, the
+// noise estimate and the noise floor, levels, and the library's own reference-free fold
+// measure. The reference triangles are used only here, never by the library.
+//
+// Two groups:
+// - what holds: the noisy saddle (sigma = 0.5% of the diagonal) folds nothing and its
+//   surface stays on the truth; the noise does not change the rippled field's level count;
+//   the noise estimate is calibrated; the floor is what keeps a noisy cloud from being
+//   chased; the reference-free measure reports no folds where there are none.
+// - what does not hold yet (the issue asks 0 folds on every shape): the overhanging,
+//   steep and pointed shapes still fold a few percent. Their bounds are today's figures
+//   (dbs-bench-folds, README) with a small margin, so a regression fails; tightening them
+//   is the open part of the fold-free work. This group is labelled "slow" (about half a
+//   minute) and left out of the sanitizer run.
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "boundary.hpp"
+#include "fold_shapes.hpp"
+#include "meshless_reference.hpp"
+#include "parameterize.hpp"
+#include "point_cloud.hpp"
+
+#include "core_test_support.hpp"
+
+namespace {
+
+using dbs::Vec3;
+using dbs_folds::FoldShape;
+
+std::vector<Vec3> points_of(const std::vector<double>& xyz, double scale = 1.0) {
+  std::vector<Vec3> p;
+  for (std::size_t i = 0; i + 2 < xyz.size(); i += 3) p.emplace_back(scale * xyz[i], scale * xyz[i + 1], scale * xyz[i + 2]);
+  return p;
+}
+
+struct Run {
+  dbs::Result result;
+  dbs_folds::FoldCount folds;
+  double to_truth = 0.0;  // mean |S(u_i, v_i) - noise-free surface|
+};
+
+Run run(const FoldShape& shape, dbs::Options options = {}, double scale = 1.0) {
+  const dbs::Boundary boundary(points_of(shape.bottom, scale), points_of(shape.right, scale), points_of(shape.top, scale), points_of(shape.left, scale));
+  Run r{dbs::parameterize(dbs::PointCloud(points_of(shape.xyz, scale)), boundary, options), {}, 0.0};
+  std::vector<double> uv, on_surface;
+  for (std::size_t i = 0; i < r.result.u.size(); ++i) {
+    uv.push_back(r.result.u[i]);
+    uv.push_back(r.result.v[i]);
+    const Vec3 s = r.result.evaluate(r.result.u[i], r.result.v[i]) / scale;
+    on_surface.insert(on_surface.end(), {s.x(), s.y(), s.z()});
+  }
+  r.folds = dbs_folds::fold_share(uv, shape.triangles);
+  r.to_truth = dbs_folds::mean_distance_to_surface(shape, on_surface);
+  std::printf("%-13s levels %d patches %3zu folds %4zu (%5.2f%%) mean %.3g to truth %.3g target %.3g (requested %.3g) noise %.3g measure %.2f%% (%zu/%zu undecided)\n",
+              shape.name.c_str(), r.result.levels, r.result.patches.size(), r.folds.folded, 100.0 * r.folds.share, r.result.mean_distance, r.to_truth,
+              r.result.accuracy, r.result.requested_accuracy, r.result.noise, 100.0 * r.result.folded_share, r.result.undecided_points, r.result.judged_points);
+  return r;
+}
+
+void noisy_saddle_stays_on_the_truth_and_folds_nothing(void**) {
+  const FoldShape shape = dbs_folds::saddle(dbs_folds::kSaddleNoise);
+  const Run r = run(shape);
+  assert_int_equal(r.folds.folded, 0);
+  assert_true(r.to_truth < shape.noise_sigma / 3.0);
+  // The estimate is calibrated (within 30% of the true sigma) and raised the target to the
+  // floor 1.25 sigma sqrt(2/pi); a single patch then fits.
+  std::printf("noisy saddle: sigma %.4g, estimated %.4g\n", shape.noise_sigma, r.result.noise);
+  assert_true(std::abs(r.result.noise - shape.noise_sigma) <= 0.3 * shape.noise_sigma);
+  assert_true(std::abs(r.result.accuracy - 1.25 * r.result.noise * std::sqrt(2.0 / M_PI)) <= 1e-12 * r.result.accuracy);
+  assert_true(r.result.accuracy > r.result.requested_accuracy);
+  assert_true(r.result.accuracy_met);
+  assert_false(r.result.requested_accuracy_met);  // 1e-3 of the diagonal is below what the noise allows
+  assert_int_equal(r.result.levels, 1);
+  assert_true(r.result.folded_share <= 0.001);
+}
+
+void without_the_floor_the_noise_is_chased(void**) {
+  const FoldShape shape = dbs_folds::saddle(dbs_folds::kSaddleNoise);
+  dbs::Options options;
+  options.noise_floor = 0;
+  options.max_level = 2;
+  const Run r = run(shape, options);
+  assert_true(r.result.accuracy == r.result.requested_accuracy);
+  assert_int_equal(r.result.levels, 3);  // every patch subdivides to the last level
+  assert_false(r.result.accuracy_met);
+}
+
+void clean_saddle_has_no_noise(void**) {
+  const Run r = run(dbs_folds::saddle());
+  assert_int_equal(r.folds.folded, 0);
+  assert_true(r.result.noise < 0.1 * r.result.requested_accuracy);
+  assert_true(r.result.accuracy == r.result.requested_accuracy);
+  assert_int_equal(r.result.folded_points, 0);
+}
+
+void noise_does_not_change_the_level_count(void**) {
+  const Run clean = run(dbs_folds::rippled());
+  const Run noisy = run(dbs_folds::rippled(dbs_folds::kRippledNoise));
+  assert_true(clean.result.levels >= 2);
+  assert_int_equal(noisy.result.levels, clean.result.levels);
+  assert_int_equal(clean.folds.folded, 0);
+  assert_int_equal(noisy.folds.folded, 0);
+  assert_int_equal(clean.result.folded_points, 0);
+  assert_true(noisy.result.folded_share <= 0.001);
+}
+
+void hard_shapes_stay_within_their_bounds(void**) {
+  // Folded reference triangles with the default options, 0.3 (u,v) of the bound above the
+  // figure measured when the guard, the seam correction and the seam-aware assignment
+  // landed; before them (0.2): mushroom 9.65%, tall dome 7.37%, fingers 4.08%, open box
+  // 0.21%, cone 1.27%, sphere cap 2.30%.
+  const struct {
+    const char* name;
+    double max_share;
+  } bounds[] = {{"mushroom", 0.085}, {"tall-dome", 0.095}, {"fingers", 0.040}, {"open-box", 0.0025}, {"cone", 0.011}, {"sphere-cap", 0.009}};
+  for (const auto& b : bounds) {
+    const Run r = run(dbs_folds::fold_shape(b.name));
+    assert_true(r.folds.share <= b.max_share);
+    // The reference-free measure never reports more than the reference folds (it misses
+    // collapses, which keep their orientation) and is at most 0.1% on the creased box.
+    if (std::string(b.name) == "open-box") assert_true(r.result.folded_share <= 0.001);
+  }
+}
+
+void sphere_cap_against_the_meshless_reference(void**) {
+  // 270 degrees of a sphere, open only at its rim: no failure; the issue asks for no more
+  // folds than a meshless method (k = 12 inverse-distance weights, one solve) on the same
+  // points. That is not met yet: the bound is today's figure (0.64% against the meshless
+  // 0.06%), so this checks only that it does not get worse.
+  const FoldShape shape = dbs_folds::sphere_cap();
+  const Run r = run(shape);
+  const dbs_folds::MeshlessReference meshless = dbs_folds::meshless_reference(shape);
+  const dbs_folds::FoldCount reference = dbs_folds::fold_share(meshless.uv, shape.triangles);
+  std::printf("sphere cap: libdbs %.2f%%, meshless %.2f%%\n", 100.0 * r.folds.share, 100.0 * reference.share);
+  assert_true(reference.share <= 0.002);
+  assert_true(r.folds.share <= 0.009);
+}
+
+void hard_shape_is_scale_and_thread_invariant(void**) {
+  const FoldShape shape = dbs_folds::cone();
+  dbs::Options one, two;
+  one.threads = 1;
+  two.threads = 2;
+  one.max_level = two.max_level = 2;
+  const Run a = run(shape, one), b = run(shape, two), scaled = run(shape, one, 1000.0);
+  assert_true(a.result.u == b.result.u && a.result.v == b.result.v);
+  assert_int_equal(a.result.folded_points, b.result.folded_points);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < a.result.u.size(); ++i) worst = std::max({worst, std::abs(a.result.u[i] - scaled.result.u[i]), std::abs(a.result.v[i] - scaled.result.v[i])});
+  std::printf("cone: (u,v) of the cloud x1000 differ by %.3g\n", worst);
+  // Not the 1e-9 of the smooth clouds (test_recursive): on these shapes the iterations of the
+  // evolution amplify rounding, and 0.2 already differed by 3e-6 on the clean saddle with a
+  // single patch and by 5e-8 here; the guard's decisions are the same at both scales (the
+  // same nodes damped), and the (u,v) differ by 7e-7.
+  assert_true(worst <= 1e-5);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // "--quick": the group that holds, for the sanitizer build.
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const struct CMUnitTest always[] = {
+      cmocka_unit_test(noisy_saddle_stays_on_the_truth_and_folds_nothing),
+      cmocka_unit_test(without_the_floor_the_noise_is_chased),
+      cmocka_unit_test(clean_saddle_has_no_noise),
+      cmocka_unit_test(noise_does_not_change_the_level_count),
+  };
+  const struct CMUnitTest slow[] = {
+      cmocka_unit_test(hard_shapes_stay_within_their_bounds),
+      cmocka_unit_test(sphere_cap_against_the_meshless_reference),
+      cmocka_unit_test(hard_shape_is_scale_and_thread_invariant),
+  };
+  int failed = cmocka_run_group_tests_name("fold_free", always, nullptr, nullptr);
+  if (!quick) failed += cmocka_run_group_tests_name("fold_free_hard_shapes", slow, nullptr, nullptr);
+  return failed;
+}
