@@ -36,6 +36,7 @@ static const char *const usage_text =
     "  --threads N                worker threads, 0 = all hardware threads [0]\n"
     "  --near F                   subcloud 'near' limit, fraction of a patch diagonal [0.25]\n"
     "  --own F                    subcloud 'own' limit, fraction of a patch diagonal [0.05]\n"
+    "  --noise-floor 0|1          raise the target to the cloud's noise floor [1]\n"
     "  --report DIR               also write a validation report into DIR: mesh files,\n"
     "                             pictures and summary.json (see dbs_report_write)\n"
     "  -q, --quiet                no progress and no summary\n"
@@ -128,6 +129,7 @@ static struct option_value library_options[] = {
     {"--threads", DBS_OPT_THREADS, VALUE_INT, NULL, 0, 0.0, 0},
     {"--near", DBS_OPT_SUBCLOUD_NEAR, VALUE_DOUBLE, NULL, 0, 0.0, 0},
     {"--own", DBS_OPT_SUBCLOUD_OWN, VALUE_DOUBLE, NULL, 0, 0.0, 0},
+    {"--noise-floor", DBS_OPT_NOISE_FLOOR, VALUE_INT, NULL, 0, 0.0, 0},
 };
 #define LIBRARY_OPTION_COUNT (sizeof library_options / sizeof library_options[0])
 
@@ -346,6 +348,16 @@ static double stat_of(const dbs_result *result, int32_t stat) {
   return value;
 }
 
+/* The noise floor raised a target the user gave: say so on stderr (even with --quiet, since
+ * the result is then judged against another target than the one asked for). */
+static void warn_if_target_raised(const dbs_result *result) {
+  const int given = library_options[0].given || library_options[1].given; /* --accuracy, --relative-accuracy */
+  const double used = stat_of(result, DBS_STAT_ACCURACY), requested = stat_of(result, DBS_STAT_REQUESTED_ACCURACY);
+  if (given && used > requested)
+    fprintf(stderr, "dbs-param: warning: the accuracy %.6g asked for is below the cloud's noise floor; %.6g was used (estimated noise %.6g; --noise-floor 0 keeps the target)\n", requested, used,
+            stat_of(result, DBS_STAT_NOISE));
+}
+
 static void print_summary(const dbs_result *result, const char *result_path) {
   size_t points = 0;
   dbs_result_point_count(result, &points);
@@ -355,7 +367,13 @@ static void print_summary(const dbs_result *result, const char *result_path) {
   printf("iterations      %.0f\n", stat_of(result, DBS_STAT_ITERATIONS));
   printf("mean distance   %.6g\n", stat_of(result, DBS_STAT_MEAN_DISTANCE));
   printf("max distance    %.6g\n", stat_of(result, DBS_STAT_MAX_DISTANCE));
-  printf("accuracy        %.6g (%s)\n", stat_of(result, DBS_STAT_ACCURACY), stat_of(result, DBS_STAT_ACCURACY_MET) != 0.0 ? "met" : "not met");
+  const double used = stat_of(result, DBS_STAT_ACCURACY), requested = stat_of(result, DBS_STAT_REQUESTED_ACCURACY);
+  printf("noise           %.6g (estimated sigma along the normal)\n", stat_of(result, DBS_STAT_NOISE));
+  printf("accuracy        %.6g (%s)\n", used, stat_of(result, DBS_STAT_ACCURACY_MET) != 0.0 ? "met" : "not met");
+  if (used > requested)
+    printf("                raised from the requested %.6g (%s) to the noise floor\n", requested, stat_of(result, DBS_STAT_REQUESTED_MET) != 0.0 ? "met" : "not met");
+  printf("folds           %.2f %% of %.0f points judged (%.0f folded, %.0f undecided, %.0f sharing a (u,v))\n", 100.0 * stat_of(result, DBS_STAT_FOLDED_SHARE),
+         stat_of(result, DBS_STAT_JUDGED_POINTS), stat_of(result, DBS_STAT_FOLDED_POINTS), stat_of(result, DBS_STAT_UNDECIDED_POINTS), stat_of(result, DBS_STAT_COINCIDENT_POINTS));
   printf("time            %.3f s\n", stat_of(result, DBS_STAT_SECONDS));
   printf("result          %s\n", result_path);
 }
@@ -418,6 +436,7 @@ int main(int argc, char **argv) {
     fputc('\n', stderr);
     progress_line_open = 0;
   }
+  warn_if_target_raised(result);
   if ((status = dbs_result_save(result, cloud, cmd.result_path)) != DBS_OK) {
     library_error(status, "writing the result");
     goto done;

@@ -117,7 +117,7 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   json.begin_object();
   json.integer("points", static_cast<long long>(cloud.size()));
   json.begin_object("options");
-  for (int id = 0; id <= static_cast<int>(OptionId::SubcloudOwn); ++id) json.number(option_info(id).name, get_option(options, id));
+  for (int id = 0; id <= static_cast<int>(OptionId::NoiseFloor); ++id) json.number(option_info(id).name, get_option(options, id));
   json.end_object();
   json.begin_object("timings_seconds");
   json.number("parameterize", result.seconds);
@@ -134,6 +134,9 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   json.integer("iterations", result.iterations);
   json.number("accuracy", result.accuracy);
   json.boolean("accuracy_met", result.accuracy_met);
+  json.number("requested_accuracy", result.requested_accuracy);
+  json.boolean("requested_accuracy_met", result.requested_accuracy_met);
+  json.number("noise", result.noise);
   json.number("length_scale", result.length_scale);
   json.end_object();
   json.begin_array("patches");
@@ -169,6 +172,15 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   json.integer("suspicious", static_cast<long long>(mesh.suspicious.size()));
   json.number("suspicious_edge_factor", kSuspiciousEdgeFactor);
   json.integer("spacing_neighbour", static_cast<long long>(kSpacingNeighbour));
+  json.end_object();
+  // The reference-free fold measure of the result (no mesh; it does not trust the surface),
+  // beside the mesh's own fold count in "distortion".
+  json.begin_object("folds");
+  json.integer("judged_points", static_cast<long long>(result.judged_points));
+  json.integer("folded_points", static_cast<long long>(result.folded_points));
+  json.integer("undecided_points", static_cast<long long>(result.undecided_points));
+  json.integer("coincident_points", static_cast<long long>(result.coincident_points));
+  json.number("folded_share", result.folded_share);
   json.end_object();
   json.begin_object("distortion");
   write_distortion(json, "per_axis", per_axis.summary);

@@ -432,6 +432,15 @@ static void test_report(void **state) {
   snprintf(expected, sizeof expected, "\"scale_u\": %.10g,", distortion_stat(d, DBS_DISTORTION_SCALE_U));
   assert_non_null(strstr(json, expected));
   assert_non_null(strstr(json, "\"max_level\": 4,")); /* the default options */
+  assert_non_null(strstr(json, "\"noise_floor\": 1")); /* the default options */
+  /* the reference-free fold measure, as dbs_result_stat gives it */
+  double judged = 0, folded = -1;
+  assert_ok(dbs_result_stat(f->bump_result, DBS_STAT_JUDGED_POINTS, &judged));
+  assert_ok(dbs_result_stat(f->bump_result, DBS_STAT_FOLDED_POINTS, &folded));
+  assert_true(judged == (double)n && folded == 0);
+  snprintf(expected, sizeof expected, "\"judged_points\": %zu,", n);
+  assert_non_null(strstr(json, expected));
+  assert_non_null(strstr(json, "\"folded_points\": 0,"));
   assert_non_null(strstr(json, "\"per_axis\""));
   assert_non_null(strstr(json, "\"uniform\""));
   assert_non_null(strstr(json, "\"timings_seconds\""));
