@@ -190,12 +190,13 @@ int main(int argc, char** argv) {
 
   std::printf("libdbs %s, max level %d, relative accuracy %g, threads %s\n", dbs_version_string(), max_level, relative_accuracy,
               settings.threads == 0 ? "all" : std::to_string(settings.threads).c_str());
-  std::printf("times in seconds: the whole dbs_parameterize call, then its stages (index: k-d tree and length scale;\n"
-              "evolve: base surfaces on all levels; subdivide: middle curves and subclouds; project: every point onto its leaves)\n");
+  std::printf("times in seconds: the whole dbs_parameterize call, then its stages (index: k-d tree, length scale and noise estimate;\n"
+              "evolve: base surfaces on all levels; subdivide: middle curves and subclouds; project: every point onto its leaves;\n"
+              "folds: the reference-free fold measure); noise: the estimated sigma; folded: its share of folded points\n");
   for (const Surface* surface : settings.surfaces) {
     std::printf("\n%s: %s\n\n", surface->name, surface->formula);
-    std::printf("| points | time | index | evolve | subdivide | project | peak memory (MiB) | iterations | levels | patches | leaves | mean distance | target met |\n");
-    std::printf("|-------:|-----:|------:|-------:|----------:|--------:|------------------:|-----------:|-------:|--------:|-------:|--------------:|:----------:|\n");
+    std::printf("| points | time | index | evolve | subdivide | project | folds | peak memory (MiB) | iterations | levels | patches | leaves | mean distance | noise | folded | target met |\n");
+    std::printf("|-------:|-----:|------:|-------:|----------:|--------:|------:|------------------:|-----------:|-------:|--------:|-------:|--------------:|------:|-------:|:----------:|\n");
     std::fflush(stdout);
     for (std::size_t count : settings.sizes) {
       std::vector<double> xyz = height_field(*surface, count, 20240601 + count);
@@ -212,11 +213,11 @@ int main(int argc, char** argv) {
 
       char memory[32] = "n/a";
       if (rss_before >= 0 && peak >= 0) std::snprintf(memory, sizeof memory, "%.1f", static_cast<double>(peak - rss_before) / 1024.0);
-      std::printf("| %zu | %.2f | %.2f | %.2f | %.2f | %.2f | %s | %.0f | %.0f | %.0f | %.0f | %.3g | %s |\n", count, seconds,
+      std::printf("| %zu | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %s | %.0f | %.0f | %.0f | %.0f | %.3g | %.2g | %.2f%% | %s |\n", count, seconds,
                   stat(result, DBS_STAT_SECONDS_INDEX), stat(result, DBS_STAT_SECONDS_EVOLVE), stat(result, DBS_STAT_SECONDS_SUBDIVIDE),
-                  stat(result, DBS_STAT_SECONDS_PARAMETERIZE), memory, stat(result, DBS_STAT_ITERATIONS), stat(result, DBS_STAT_LEVELS),
-                  stat(result, DBS_STAT_PATCHES), stat(result, DBS_STAT_LEAVES), stat(result, DBS_STAT_MEAN_DISTANCE),
-                  stat(result, DBS_STAT_ACCURACY_MET) != 0.0 ? "yes" : "no");
+                  stat(result, DBS_STAT_SECONDS_PARAMETERIZE), stat(result, DBS_STAT_SECONDS_FOLDS), memory, stat(result, DBS_STAT_ITERATIONS),
+                  stat(result, DBS_STAT_LEVELS), stat(result, DBS_STAT_PATCHES), stat(result, DBS_STAT_LEAVES), stat(result, DBS_STAT_MEAN_DISTANCE),
+                  stat(result, DBS_STAT_NOISE), 100.0 * stat(result, DBS_STAT_FOLDED_SHARE), stat(result, DBS_STAT_ACCURACY_MET) != 0.0 ? "yes" : "no");
       std::fflush(stdout);
       dbs_result_destroy(result);
       dbs_cloud_destroy(cloud);

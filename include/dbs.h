@@ -407,7 +407,7 @@ DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, do
 #define DBS_STAT_FOLDED_POINTS 20        /* \since 0.3: number of such folded points, a count */
 #define DBS_STAT_UNDECIDED_POINTS 21     /* \since 0.3: points whose neighbourhood is not surface-like enough to decide (not counted as folded), a count */
 #define DBS_STAT_COINCIDENT_POINTS 22    /* \since 0.3: points sharing one (u,v) with another point, a count */
-#define DBS_STAT_JUDGED_POINTS 23        /* \since 0.3: points the fold measure judged: all of them up to 25,000, beyond that 25,000 or so evenly strided over the input order (the FOLDED/UNDECIDED/COINCIDENT counts are of these), a count */
+#define DBS_STAT_JUDGED_POINTS 23        /* \since 0.3: points the fold measure judged: all of them up to 10,000, beyond that 10,000 or so evenly strided over the input order (the FOLDED/UNDECIDED/COINCIDENT counts are of these), a count */
 /** One summary statistic (DBS_STAT_*) of the result, in the unit given beside its id.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (stat). \since 0.1 */
 DBS_API int dbs_result_stat(const dbs_result *result, int32_t stat, double *out);

@@ -22,7 +22,7 @@ struct Result {
   bool requested_accuracy_met = false;  // every leaf met the requested target
   double noise = 0.0;                   // estimated noise deviation sigma along the normal, cloud units
   // The fold measure of the (u,v) (fold_measure.hpp): no connectivity, no trust in the surface.
-  // It judges at most 25,000 points, evenly strided over the input order; counts are of those.
+  // It judges at most 10,000 points, evenly strided over the input order; counts are of those.
   std::size_t judged_points = 0, folded_points = 0, undecided_points = 0, coincident_points = 0;
   double folded_share = 0.0;  // folded / decided points
   int levels = 0;             // quadtree levels present (1 = root only)
