@@ -194,7 +194,9 @@ typedef struct dbs_cloud dbs_cloud;
 /** Copies `count` points from `xyz` (3*count doubles). count >= 1, all finite.
  *  Returns DBS_ERR_NULL_ARGUMENT (xyz or out; checked before count), DBS_ERR_EMPTY
  *  (count 0), DBS_ERR_NON_FINITE (naming the first such point), DBS_ERR_INVALID_ARGUMENT
- *  (a count no array can have), DBS_ERR_NO_MEMORY. \since 0.1 */
+ *  (a count no array can have), DBS_ERR_OUT_OF_RANGE (more than 4294967295 points, since
+ *  0.3: libdbs indexes points with 32 bits; 0.2 refused them only inside dbs_parameterize),
+ *  DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_cloud_create(const double *xyz, size_t count, dbs_cloud **out);
 /** Loads .xyz/.txt (text), .ply, .obj or .drc (the extension, in any case, decides); see
  *  docs/FORMATS.md. .ply, .obj and .drc need DBS_FEATURE_DRACO.
