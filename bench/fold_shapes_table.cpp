@@ -11,7 +11,7 @@
 // points of dist(S(u_i,v_i), noise-free surface); wall time of dbs_parameterize; then the same
 // reference folds and time for the meshless reference.
 //
-// usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N]
+// usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -31,7 +31,7 @@ using dbs_folds::FoldCount;
 using dbs_folds::FoldShape;
 
 [[noreturn]] void usage_error(const std::string& message) {
-  std::fprintf(stderr, "dbs-bench-folds: %s\nusage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N]\nshapes:", message.c_str());
+  std::fprintf(stderr, "dbs-bench-folds: %s\nusage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1]\nshapes:", message.c_str());
   for (const std::string& name : dbs_folds::fold_shape_names()) std::fprintf(stderr, " %s", name.c_str());
   std::fprintf(stderr, "\n");
   std::exit(2);
@@ -48,6 +48,7 @@ struct Settings {
   std::vector<std::string> shapes = dbs_folds::fold_shape_names();
   int threads = -1;    // -1: the library's default
   int max_level = -1;  // -1: the library's default
+  int repair = -1;     // -1: the library's default (DBS_OPT_REPAIR)
 };
 
 Settings parse_arguments(int argc, char** argv) {
@@ -73,6 +74,8 @@ Settings parse_arguments(int argc, char** argv) {
       settings.threads = parse_int(arg, value);
     } else if (arg == "--max-level") {
       settings.max_level = parse_int(arg, value);
+    } else if (arg == "--repair") {
+      settings.repair = parse_int(arg, value);
     } else {
       usage_error("unknown option '" + arg + "'");
     }
@@ -162,14 +165,16 @@ int main(int argc, char** argv) {
   }
   if (settings.threads >= 0) dbs_options_set_int(options, DBS_OPT_THREADS, settings.threads);
   if (settings.max_level >= 0) dbs_options_set_int(options, DBS_OPT_MAX_LEVEL, settings.max_level);
-  int32_t max_level = 0, threads = 0;
+  if (settings.repair >= 0 && dbs_options_set_int(options, DBS_OPT_REPAIR, settings.repair) != DBS_OK) usage_error(std::string("--repair: ") + dbs_last_error_message());
+  int32_t max_level = 0, threads = 0, repair = 0;
   double relative_accuracy = 0.0;
+  dbs_options_get_int(options, DBS_OPT_REPAIR, &repair);
   dbs_options_get_int(options, DBS_OPT_MAX_LEVEL, &max_level);
   dbs_options_get_int(options, DBS_OPT_THREADS, &threads);
   dbs_options_get_double(options, DBS_OPT_RELATIVE_ACCURACY, &relative_accuracy);
 
-  std::printf("libdbs %s, max level %d, relative accuracy %g, threads %s\n", dbs_version_string(), max_level, relative_accuracy,
-              threads == 0 ? "all" : std::to_string(threads).c_str());
+  std::printf("libdbs %s, max level %d, relative accuracy %g, threads %s, repair %s\n", dbs_version_string(), max_level, relative_accuracy,
+              threads == 0 ? "all" : std::to_string(threads).c_str(), repair ? "on" : "off");
   std::printf("folds: reference triangles whose signed (u,v) area is negative or below 1e-3 of the median, as inverted+collapsed;\n"
               "to truth: mean distance of the result surface at each point's (u,v) to the noise-free surface\n\n");
   std::printf("| shape | points | triangles | levels | patches | folds | folds %% | ref.-free folds | mean distance | target | to truth | time (s) | meshless folds | meshless %% | meshless time (s) |\n");

@@ -48,9 +48,10 @@ double stat_value(const dbs::Result& r, int32_t stat) {
     case DBS_STAT_UNDECIDED_POINTS: return static_cast<double>(r.undecided_points);
     case DBS_STAT_COINCIDENT_POINTS: return static_cast<double>(r.coincident_points);
     case DBS_STAT_JUDGED_POINTS: return static_cast<double>(r.judged_points);
+    case DBS_STAT_REPAIRED_POINTS: return static_cast<double>(r.repaired_points);
     default: break;
   }
-  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_JUDGED_POINTS + 1) + ")");
+  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_REPAIRED_POINTS + 1) + ")");
 }
 
 }  // namespace
@@ -99,6 +100,14 @@ int dbs_result_point_levels(const dbs_result* result, int32_t* out, size_t capac
     require_non_null(result, "result");
     require_non_null(out, "out");
     copy_values(result->result.level, out, capacity, "out");
+  });
+}
+
+int dbs_result_repaired(const dbs_result* result, int32_t* out, size_t capacity) {
+  return guarded(__func__, [&] {
+    require_non_null(result, "result");
+    require_non_null(out, "out");
+    copy_values(result->result.repaired, out, capacity, "out");
   });
 }
 

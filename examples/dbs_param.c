@@ -37,6 +37,7 @@ static const char *const usage_text =
     "  --near F                   subcloud 'near' limit, fraction of a patch diagonal [0.25]\n"
     "  --own F                    subcloud 'own' limit, fraction of a patch diagonal [0.05]\n"
     "  --noise-floor 0|1          raise the target to the cloud's noise floor [1]\n"
+    "  --repair 0|1               last-resort repair of points the surfaces never reached [0]\n"
     "  --report DIR               also write a validation report into DIR: mesh files,\n"
     "                             pictures and summary.json (see dbs_report_write)\n"
     "  -q, --quiet                no progress and no summary\n"
@@ -130,6 +131,7 @@ static struct option_value library_options[] = {
     {"--near", DBS_OPT_SUBCLOUD_NEAR, VALUE_DOUBLE, NULL, 0, 0.0, 0},
     {"--own", DBS_OPT_SUBCLOUD_OWN, VALUE_DOUBLE, NULL, 0, 0.0, 0},
     {"--noise-floor", DBS_OPT_NOISE_FLOOR, VALUE_INT, NULL, 0, 0.0, 0},
+    {"--repair", DBS_OPT_REPAIR, VALUE_INT, NULL, 0, 0.0, 0},
 };
 #define LIBRARY_OPTION_COUNT (sizeof library_options / sizeof library_options[0])
 
@@ -374,6 +376,7 @@ static void print_summary(const dbs_result *result, const char *result_path) {
     printf("                raised from the requested %.6g (%s) to the noise floor\n", requested, stat_of(result, DBS_STAT_REQUESTED_MET) != 0.0 ? "met" : "not met");
   printf("folds           %.2f %% of %.0f points judged (%.0f folded, %.0f undecided, %.0f sharing a (u,v))\n", 100.0 * stat_of(result, DBS_STAT_FOLDED_SHARE),
          stat_of(result, DBS_STAT_JUDGED_POINTS), stat_of(result, DBS_STAT_FOLDED_POINTS), stat_of(result, DBS_STAT_UNDECIDED_POINTS), stat_of(result, DBS_STAT_COINCIDENT_POINTS));
+  if (stat_of(result, DBS_STAT_REPAIRED_POINTS) > 0.0) printf("repaired        %.0f points\n", stat_of(result, DBS_STAT_REPAIRED_POINTS));
   printf("time            %.3f s\n", stat_of(result, DBS_STAT_SECONDS));
   printf("result          %s\n", result_path);
 }

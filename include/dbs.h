@@ -272,6 +272,7 @@ typedef struct dbs_options dbs_options;
 #define DBS_OPT_THREADS 7           /* int; 0 = all hardware threads; [0, 256]. Output never depends on it. */
 #define DBS_OPT_SUBCLOUD_NEAR 8     /* double; 0.25; (0, 10]. A4.3 "near" limit, fraction of the diagonal of the child's bounding box in the frame of its corners. */
 #define DBS_OPT_SUBCLOUD_OWN 9      /* double; 0.05; [0, 10], <= near. A4.4 "own" limit, fraction of the child's diagonal. */
+#define DBS_OPT_REPAIR 11           /* int; 0; [0, 1]. \since 0.3. 1: the last-resort repair: a point farther from the surface than 10x the target used and one spacing h (one the base surfaces never reached: under an overhang, up a steep wall) takes the inverse-distance mean of its 12 nearest neighbours' (u,v), then steps towards its foot; its distance, patch and level are then those of the surface at its new (u,v), and dbs_result_repaired flags it. Fewer folds where the surfaces miss the cloud, a larger mean distance: off by default. */
 #define DBS_OPT_NOISE_FLOOR 10      /* int; 1; [0, 1]. \since 0.3. 1: the accuracy target used is the larger of the requested one and the noise floor, 1.25 sigma sqrt(2/pi) for the cloud's estimated noise sigma (the mean distance a surface on the true surface scores), so a noisy cloud is not chased to the last level; 0: the requested target as given. */
 
 /* Solvers for DBS_OPT_SOLVER (pinned; \since 0.1). */
@@ -376,6 +377,10 @@ DBS_API int dbs_result_point_patches(const dbs_result *result, int32_t *out, siz
 /** Quadtree level of that leaf for each point (0 = the root); `capacity` in values.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_result_point_levels(const dbs_result *result, int32_t *out, size_t capacity);
+/** 1 for each point whose (u,v) the last-resort repair gave (DBS_OPT_REPAIR), else 0; all 0
+ *  when the repair was off; `capacity` in values.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.3 */
+DBS_API int dbs_result_repaired(const dbs_result *result, int32_t *out, size_t capacity);
 
 /** Point (and, if out_normal is not NULL, unit normal) of the base surface at (u,v) in [0,1]^2;
  *  3 doubles each. A (u,v) on a seam between leaves is evaluated on the leaf with the
@@ -409,6 +414,7 @@ DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, do
 #define DBS_STAT_FOLDED_POINTS 20        /* \since 0.3: number of such folded points, a count */
 #define DBS_STAT_UNDECIDED_POINTS 21     /* \since 0.3: points whose neighbourhood is not surface-like enough to decide (not counted as folded), a count */
 #define DBS_STAT_COINCIDENT_POINTS 22    /* \since 0.3: points sharing one (u,v) with another point, a count */
+#define DBS_STAT_REPAIRED_POINTS 24      /* \since 0.3: points the last-resort repair gave their (u,v) (DBS_OPT_REPAIR), a count */
 #define DBS_STAT_JUDGED_POINTS 23        /* \since 0.3: points the fold measure judged: all of them up to 10,000, beyond that 10,000 or so evenly strided over the input order (the FOLDED/UNDECIDED/COINCIDENT counts are of these), a count */
 /** One summary statistic (DBS_STAT_*) of the result, in the unit given beside its id.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (stat). \since 0.1 */

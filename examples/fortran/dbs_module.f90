@@ -33,6 +33,7 @@ module dbs
   integer(c_int32_t), parameter :: DBS_OPT_SOLVER = 6, DBS_OPT_THREADS = 7
   integer(c_int32_t), parameter :: DBS_OPT_SUBCLOUD_NEAR = 8, DBS_OPT_SUBCLOUD_OWN = 9
   integer(c_int32_t), parameter :: DBS_OPT_NOISE_FLOOR = 10
+  integer(c_int32_t), parameter :: DBS_OPT_REPAIR = 11
   integer(c_int32_t), parameter :: DBS_SOLVER_LINEAR = 0, DBS_SOLVER_CERES = 1
 
   ! ---- result statistics ---------------------------------------------------------------
@@ -47,6 +48,7 @@ module dbs
   integer(c_int32_t), parameter :: DBS_STAT_FOLDED_SHARE = 19, DBS_STAT_FOLDED_POINTS = 20
   integer(c_int32_t), parameter :: DBS_STAT_UNDECIDED_POINTS = 21, DBS_STAT_COINCIDENT_POINTS = 22
   integer(c_int32_t), parameter :: DBS_STAT_JUDGED_POINTS = 23
+  integer(c_int32_t), parameter :: DBS_STAT_REPAIRED_POINTS = 24
 
   ! ---- validation: meshes, distortion, distances ----------------------------------------
   real(c_double), parameter :: DBS_MESH_SUSPICIOUS_FACTOR = 4.0_c_double
@@ -277,6 +279,13 @@ module dbs
       integer(c_int32_t), intent(out) :: out(*)
       integer(c_size_t), value :: capacity
       integer(c_int) :: dbs_result_point_levels
+    end function
+    function dbs_result_repaired(result, out, capacity) bind(C, name="dbs_result_repaired")
+      import :: c_int, c_int32_t, c_size_t, c_ptr
+      type(c_ptr), value :: result
+      integer(c_int32_t), intent(out) :: out(*)
+      integer(c_size_t), value :: capacity
+      integer(c_int) :: dbs_result_repaired
     end function
     ! out_normal is optional: left out, the C side receives NULL.
     function dbs_result_evaluate(result, u, v, out_xyz, out_normal) bind(C, name="dbs_result_evaluate")

@@ -60,6 +60,7 @@ OPT_THREADS = 7
 OPT_SUBCLOUD_NEAR = 8
 OPT_SUBCLOUD_OWN = 9
 OPT_NOISE_FLOOR = 10
+OPT_REPAIR = 11
 INT_OPTIONS = (OPT_MAX_LEVEL, OPT_INITIAL_GRID, OPT_MAX_GRID, OPT_SOLVER, OPT_THREADS)
 
 FEATURE_DRACO = 0
@@ -93,6 +94,7 @@ STAT_FOLDED_POINTS = 20
 STAT_UNDECIDED_POINTS = 21
 STAT_COINCIDENT_POINTS = 22
 STAT_JUDGED_POINTS = 23
+STAT_REPAIRED_POINTS = 24
 
 MESH_SUSPICIOUS_FACTOR = 4.0
 
@@ -180,6 +182,7 @@ PROTOTYPES = {
     "dbs_result_distances": (_int, [_ptr, _P(_dbl), _size]),
     "dbs_result_point_patches": (_int, [_ptr, _P(_i32), _size]),
     "dbs_result_point_levels": (_int, [_ptr, _P(_i32), _size]),
+    "dbs_result_repaired": (_int, [_ptr, _P(_i32), _size]),
     "dbs_result_evaluate": (_int, [_ptr, _dbl, _dbl, _P(_dbl), _P(_dbl)]),
     "dbs_result_stat": (_int, [_ptr, _i32, _P(_dbl)]),
     "dbs_result_patches": (_int, [_ptr, _P(_ptr)]),
@@ -510,6 +513,13 @@ class Result(_Handle):
         count = len(self)
         array = (_i32 * count)()
         _check(lib.dbs_result_point_levels(self._handle, array, count))
+        return list(array)
+
+    def repaired(self):
+        """1 for each point the last-resort repair (OPT_REPAIR) placed, else 0."""
+        count = len(self)
+        array = (_i32 * count)()
+        _check(lib.dbs_result_repaired(self._handle, array, count))
         return list(array)
 
     def evaluate(self, u, v):

@@ -31,6 +31,7 @@ const OptionSpec kSpecs[] = {
     {{"subcloud_near", false, 0.0, 10.0}, true},
     {{"subcloud_own", false, 0.0, 10.0}, false},
     {{"noise_floor", true, 0.0, 1.0}, false},
+    {{"repair", true, 0.0, 1.0}, false},
 };
 constexpr int kOptionCount = static_cast<int>(sizeof(kSpecs) / sizeof(kSpecs[0]));
 
@@ -80,6 +81,7 @@ int Options::*integer_member(OptionId id) {
     case OptionId::MaxGrid: return &Options::max_grid;
     case OptionId::Threads: return &Options::threads;
     case OptionId::NoiseFloor: return &Options::noise_floor;
+    case OptionId::Repair: return &Options::repair;
     default: return nullptr;
   }
 }

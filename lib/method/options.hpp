@@ -29,6 +29,8 @@ struct Options {
   /// 1: the accuracy target is raised to the noise floor (what a surface on the true surface
   /// would score against the cloud's estimated noise); 0: the target is used as given.
   int noise_floor = 1;
+  /// 1: the last-resort repair of points the surfaces never reached (fold_repair.hpp).
+  int repair = 0;
   ProgressFn progress;
   LevelFn on_level;
 };
@@ -46,6 +48,7 @@ enum class OptionId {
   SubcloudNear = 8,
   SubcloudOwn = 9,
   NoiseFloor = 10,
+  Repair = 11,
 };
 
 struct OptionInfo {

@@ -13,6 +13,7 @@
 #include "error.hpp"
 #include "evolve.hpp"
 #include "fold_measure.hpp"
+#include "fold_repair.hpp"
 #include "noise_estimate.hpp"
 #include "parallel.hpp"
 #include "progress.hpp"
@@ -92,6 +93,8 @@ class Driver {
     }
     const auto parameterize_start = Clock::now();
     parameterize_points();
+    result_.repaired.assign(points_.size(), 0);
+    if (options_.repair) result_.repaired_points = repair_far_points(result_, points_, threads_);
     summarize();
     result_.stage_seconds.parameterize = seconds_since(parameterize_start);
     const auto folds_start = Clock::now();

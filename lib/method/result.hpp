@@ -12,6 +12,10 @@ struct Result {
   // per point, input order
   std::vector<double> u, v, distance;
   std::vector<std::int32_t> patch, level;
+  /// Per point: 1 when the last-resort repair (fold_repair.hpp) gave it its (u,v) from its
+  /// neighbours (its distance is then to the surface at that (u,v)); empty when it did not run.
+  std::vector<char> repaired;
+  std::size_t repaired_points = 0;
   // the quadtree; patches[id].id == id; patches[0] is the root
   std::vector<Patch> patches;
   // summary

@@ -117,7 +117,7 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   json.begin_object();
   json.integer("points", static_cast<long long>(cloud.size()));
   json.begin_object("options");
-  for (int id = 0; id <= static_cast<int>(OptionId::NoiseFloor); ++id) json.number(option_info(id).name, get_option(options, id));
+  for (int id = 0; id <= static_cast<int>(OptionId::Repair); ++id) json.number(option_info(id).name, get_option(options, id));
   json.end_object();
   json.begin_object("timings_seconds");
   json.number("parameterize", result.seconds);
@@ -181,6 +181,7 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   json.integer("undecided_points", static_cast<long long>(result.undecided_points));
   json.integer("coincident_points", static_cast<long long>(result.coincident_points));
   json.number("folded_share", result.folded_share);
+  json.integer("repaired_points", static_cast<long long>(result.repaired_points));
   json.end_object();
   json.begin_object("distortion");
   write_distortion(json, "per_axis", per_axis.summary);

@@ -29,6 +29,7 @@ static const struct option_row kOptions[] = {
     {DBS_OPT_SUBCLOUD_NEAR, "subcloud_near", 0, 0.25, 0.0, 10.0, 0, -0.5, 10.5},
     {DBS_OPT_SUBCLOUD_OWN, "subcloud_own", 0, 0.05, 0.0, 10.0, 1, -1e-9, 10.5},
     {DBS_OPT_NOISE_FLOOR, "noise_floor", 1, 1, 0.0, 1.0, 1, -1, 2},
+    {DBS_OPT_REPAIR, "repair", 1, 0, 0.0, 1.0, 1, -1, 2},
 };
 #define OPTION_COUNT (sizeof kOptions / sizeof kOptions[0])
 
@@ -163,7 +164,7 @@ static void the_wrong_type_is_rejected(void **state) {
 static void unknown_ids_are_rejected(void **state) {
   (void)state;
   dbs_options *options = new_options();
-  const int32_t unknown[] = {-1, 11, 1000};
+  const int32_t unknown[] = {-1, 12, 1000};
   for (int k = 0; k < 3; ++k) {
     char needle[48];
     snprintf(needle, sizeof needle, "option id %d", (int)unknown[k]);

@@ -119,10 +119,19 @@ static void statistics(void **state) {
   assert_true(result_stat(f->result, DBS_STAT_COINCIDENT_POINTS) == 0.0);
   assert_true(result_stat(f->result, DBS_STAT_UNDECIDED_POINTS) <= 0.1 * NPOINTS);
   assert_true(result_stat(f->result, DBS_STAT_JUDGED_POINTS) == NPOINTS); /* a small cloud: every point */
+  assert_true(result_stat(f->result, DBS_STAT_REPAIRED_POINTS) == 0);     /* the repair is off by default */
+  {
+    int32_t repaired[NPOINTS];
+    assert_ok(dbs_result_repaired(f->result, repaired, NPOINTS));
+    for (int i = 0; i < NPOINTS; ++i) assert_int_equal(repaired[i], 0);
+    assert_failure(dbs_result_repaired(f->result, repaired, NPOINTS - 1), DBS_ERR_BUFFER_TOO_SMALL, "dbs_result_repaired", "out");
+    assert_failure(dbs_result_repaired(NULL, repaired, NPOINTS), DBS_ERR_NULL_ARGUMENT, "dbs_result_repaired", "result");
+    assert_failure(dbs_result_repaired(f->result, NULL, NPOINTS), DBS_ERR_NULL_ARGUMENT, "dbs_result_repaired", "out");
+  }
 
   double value = -7;
-  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 24)");
-  assert_failure(dbs_result_stat(f->result, 24, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 24 ");
+  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 25)");
+  assert_failure(dbs_result_stat(f->result, 25, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 25 ");
   assert_true(value == -7);
 }
 
