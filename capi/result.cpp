@@ -107,6 +107,7 @@ int dbs_result_repaired(const dbs_result* result, int32_t* out, size_t capacity)
   return guarded(__func__, [&] {
     require_non_null(result, "result");
     require_non_null(out, "out");
+    if (result->result.repaired.size() != result->result.u.size()) fail_status(DBS_ERR_INTERNAL, "the result's repair flags do not match its points");
     copy_values(result->result.repaired, out, capacity, "out");
   });
 }

@@ -280,7 +280,9 @@ typedef struct dbs_options dbs_options;
 #define DBS_SOLVER_CERES 1  /* Ceres refinement: DBS_ERR_UNSUPPORTED until it is implemented */
 
 /** Progress: `fraction` rises monotonically in [0,1] and the last call has exactly 1.0;
- *  `stage` names the running stage ("index", "evolve", "subdivide", "parameterize", "done");
+ *  `stage` names the running stage ("index", "evolve", "subdivide", "parameterize",
+ *  "folds" (since 0.3: the repair, when on, runs at the end of "parameterize", the fold
+ *  measure in "folds"), "done");
  *  the string is valid only during the call. Called on the thread that called
  *  dbs_parameterize (see "Callbacks" above); must return normally.
  *  Return 0 to go on, non-zero to cancel (dbs_parameterize returns DBS_ERR_CANCELLED).
@@ -415,7 +417,7 @@ DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, do
 #define DBS_STAT_UNDECIDED_POINTS 21     /* \since 0.3: points whose neighbourhood is not surface-like enough to decide (not counted as folded), a count */
 #define DBS_STAT_COINCIDENT_POINTS 22    /* \since 0.3: points sharing one (u,v) with another point, a count */
 #define DBS_STAT_REPAIRED_POINTS 24      /* \since 0.3: points the last-resort repair gave their (u,v) (DBS_OPT_REPAIR), a count */
-#define DBS_STAT_JUDGED_POINTS 23        /* \since 0.3: points the fold measure judged: all of them up to 10,000, beyond that 10,000 or so evenly strided over the input order (the FOLDED/UNDECIDED/COINCIDENT counts are of these), a count */
+#define DBS_STAT_JUDGED_POINTS 23        /* \since 0.3: points the fold measure judged: all of them up to 10,000, beyond that 10,000 evenly spread over the input order (the FOLDED/UNDECIDED/COINCIDENT counts are of these), a count */
 /** One summary statistic (DBS_STAT_*) of the result, in the unit given beside its id.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (stat). \since 0.1 */
 DBS_API int dbs_result_stat(const dbs_result *result, int32_t stat, double *out);

@@ -95,8 +95,11 @@ std::size_t repair_far_points(Result& result, const std::vector<Vec3>& points, i
     const double radius = neighbours[f].empty() ? 0.0 : kRepairTrust * spread / static_cast<double>(neighbours[f].size());
     moved[f] = step_towards_foot(result, points[far[f]], start, radius);
   });
+  std::size_t repaired = 0;
   for (std::size_t f = 0; f < far.size(); ++f) {
+    if (neighbours[f].empty()) continue;  // all its neighbours coincide with it: nothing to repair from
     const std::size_t i = far[f];
+    ++repaired;
     result.u[i] = moved[f].x();
     result.v[i] = moved[f].y();
     const int leaf = result.leaf_at(result.u[i], result.v[i]);
@@ -105,7 +108,7 @@ std::size_t repair_far_points(Result& result, const std::vector<Vec3>& points, i
     result.level[i] = result.patches[leaf].level;
     result.repaired[i] = 1;
   }
-  return far.size();
+  return repaired;
 }
 
 }  // namespace dbs

@@ -27,6 +27,8 @@ namespace {
 // Share of the progress range given to each phase.
 constexpr double kIndexEnd = 0.05;
 constexpr double kLevelsEnd = 0.85;
+/// Where the fold measure starts in what is left after the levels (parameterize has 0.9).
+constexpr double kFoldsShare = 0.95;
 
 /// The noise floor is this safety factor times the mean distance sigma sqrt(2/pi) that a
 /// surface on the true surface scores against Gaussian noise sigma.
@@ -97,6 +99,8 @@ class Driver {
     if (options_.repair) result_.repaired_points = repair_far_points(result_, points_, threads_);
     summarize();
     result_.stage_seconds.parameterize = seconds_since(parameterize_start);
+    const double levels_end = level_progress_end(result_.levels - 1);
+    progress_.report(levels_end + (1.0 - levels_end) * kFoldsShare, "folds");
     const auto folds_start = Clock::now();
     const FoldMeasure folds = judge_folds();
     result_.judged_points = folds.points;
@@ -199,11 +203,11 @@ class Driver {
   /// neighbourhoods from the spacing), so that it costs a bounded share of a large run.
   FoldMeasure judge_folds() const {
     const std::size_t n = points_.size();
-    const std::size_t stride = (n + kFoldJudgedPoints - 1) / kFoldJudgedPoints;
-    if (stride <= 1) return measure_folds(points_, result_.u, result_.v, result_.noise, threads_);
+    if (n <= kFoldJudgedPoints) return measure_folds(points_, result_.u, result_.v, result_.noise, threads_);
     std::vector<Vec3> points;
     std::vector<double> u, v;
-    for (std::size_t i = 0; i < n; i += stride) {
+    for (std::size_t k = 0; k < kFoldJudgedPoints; ++k) {
+      const std::size_t i = static_cast<std::size_t>(static_cast<unsigned long long>(k) * n / kFoldJudgedPoints);
       points.push_back(points_[i]);
       u.push_back(result_.u[i]);
       v.push_back(result_.v[i]);

@@ -13,7 +13,7 @@ struct Result {
   std::vector<double> u, v, distance;
   std::vector<std::int32_t> patch, level;
   /// Per point: 1 when the last-resort repair (fold_repair.hpp) gave it its (u,v) from its
-  /// neighbours (its distance is then to the surface at that (u,v)); empty when it did not run.
+  /// neighbours (its distance is then to the surface at that (u,v)); all 0 when it was off.
   std::vector<char> repaired;
   std::size_t repaired_points = 0;
   // the quadtree; patches[id].id == id; patches[0] is the root
@@ -26,7 +26,7 @@ struct Result {
   bool requested_accuracy_met = false;  // every leaf met the requested target
   double noise = 0.0;                   // estimated noise deviation sigma along the normal, cloud units
   // The fold measure of the (u,v) (fold_measure.hpp): no connectivity, no trust in the surface.
-  // It judges at most 10,000 points, evenly strided over the input order; counts are of those.
+  // It judges at most 10,000 points, evenly spread over the input order; counts are of those.
   std::size_t judged_points = 0, folded_points = 0, undecided_points = 0, coincident_points = 0;
   double folded_share = 0.0;  // folded / decided points
   int levels = 0;             // quadtree levels present (1 = root only)

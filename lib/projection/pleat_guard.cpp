@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "error.hpp"
@@ -17,8 +18,6 @@ constexpr int kHalvingRounds = 6;
 /// acos(kMinCosine) (just under 90 degrees): steep walls are reached in a few damped steps,
 /// a reversed sheet never.
 constexpr double kMinCosine = 0.02;
-/// Rounds after the halving ones (offsets withdrawn) before the grid is left unmoved.
-constexpr int kWithdrawRounds = 4;
 
 /// True when a triangle of the moved cell turns against the cell before the move.
 bool cell_turns(const Grid& before, const Grid& after, int i, int j) {
@@ -30,7 +29,7 @@ bool cell_turns(const Grid& before, const Grid& after, int i, int j) {
   const Vec3 a = after(i, j), b = after(i + 1, j), c = after(i + 1, j + 1), d = after(i, j + 1);
   for (const Vec3& t : {Vec3((b - a).cross(c - a)), Vec3((c - a).cross(d - a)), Vec3((b - a).cross(d - a)), Vec3((c - b).cross(d - b))}) {
     const double length = t.norm();
-    if (length > 0.0 && t.dot(n) < kMinCosine * length) return true;
+    if (!std::isfinite(length) || t.dot(n) < kMinCosine * length) return true;  // a NaN move or a collapse counts too
   }
   return false;
 }
@@ -56,40 +55,51 @@ GuardedMove move_without_pleats(const Grid& start, const Grid& directions, const
     out.grid = start;
     return out;
   }
+  const int cells_u = start.nu - 1, cells_v = start.nv - 1;
+  // A cell that fails the test before any move (a skewed or concave cell of the sample) has no
+  // orientation the guard could keep: it is not judged.
+  std::vector<char> judged(static_cast<std::size_t>(cells_u) * cells_v, 0);
+  for (int j = 0; j < cells_v; ++j)
+    for (int i = 0; i < cells_u; ++i) judged[static_cast<std::size_t>(j) * cells_u + i] = !cell_turns(start, start, i, j);
+  // Each withdrawal round sets at least one more interior node back to its start (a judged
+  // cell whose four corners are back is the start's own and passes), so the rounds end.
+  const int max_rounds = kHalvingRounds + static_cast<int>(n) + 1;
   std::vector<double> scale(n, 1.0);
   std::vector<char> damped(n, 0);
   for (int round = 0;; ++round) {
     Grid moved = moved_grid(start, directions, offsets, scale);
-    std::vector<char> offending((start.nu - 1) * (start.nv - 1), 0);
+    std::vector<char> offending(judged.size(), 0);
     bool any = false;
-    for (int j = 0; j + 1 < start.nv; ++j)
-      for (int i = 0; i + 1 < start.nu; ++i)
-        if (cell_turns(start, moved, i, j)) offending[j * (start.nu - 1) + i] = any = true;
+    for (int j = 0; j < cells_v; ++j)
+      for (int i = 0; i < cells_u; ++i) {
+        const std::size_t c = static_cast<std::size_t>(j) * cells_u + i;
+        if (judged[c] && cell_turns(start, moved, i, j)) offending[c] = any = true;
+      }
     if (!any) {
       out.grid = std::move(moved);
       break;
     }
-    // The corners of every offending cell move less; after the halving rounds, not at all
-    // (a cell whose four corners are back at the start cannot turn against itself).
-    const double factor = round < kHalvingRounds ? 0.5 : 0.0;
-    for (int j = 0; j + 1 < start.nv; ++j)
-      for (int i = 0; i + 1 < start.nu; ++i) {
-        if (!offending[j * (start.nu - 1) + i]) continue;
-        for (int dj = 0; dj < 2; ++dj)
-          for (int di = 0; di < 2; ++di) {
-            const std::size_t k = static_cast<std::size_t>(j + dj) * start.nu + (i + di);
-            scale[k] *= factor;
-            damped[k] = 1;
-          }
-      }
-    if (round > kHalvingRounds + kWithdrawRounds) {
-      // Unreachable in exact arithmetic (a cell whose corners are all back is the start's
-      // own); should rounding keep a cell turning, the grid does not move at all this time.
+    if (round >= max_rounds) {  // a safeguard against rounding: the grid does not move this time
       out.grid = start;
+      std::fill(scale.begin(), scale.end(), 0.0);
       for (int j = 1; j + 1 < start.nv; ++j)
         for (int i = 1; i + 1 < start.nu; ++i) damped[static_cast<std::size_t>(j) * start.nu + i] = 1;
       break;
     }
+    // The corners of every offending cell move less; after the halving rounds, not at all.
+    const double factor = round < kHalvingRounds ? 0.5 : 0.0;
+    for (int j = 0; j < cells_v; ++j)
+      for (int i = 0; i < cells_u; ++i) {
+        if (!offending[static_cast<std::size_t>(j) * cells_u + i]) continue;
+        for (int dj = 0; dj < 2; ++dj)
+          for (int di = 0; di < 2; ++di) {
+            const int a = i + di, b = j + dj;
+            if (a == 0 || b == 0 || a == start.nu - 1 || b == start.nv - 1) continue;  // border nodes do not move
+            const std::size_t k = static_cast<std::size_t>(b) * start.nu + a;
+            scale[k] *= factor;
+            damped[k] = 1;
+          }
+      }
   }
   out.damped_nodes = static_cast<std::size_t>(std::count(damped.begin(), damped.end(), 1));
   return out;

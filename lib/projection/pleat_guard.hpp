@@ -8,7 +8,8 @@
 // (none of the four triangles its corners span) may turn by more than about 90 degrees
 // against the same cell before the move. The offsets of the corners of every offending cell
 // are halved, round after round; after the last round they are withdrawn (a cell that does
-// not move keeps the orientation it had). The grid starts as a sample of a pleat-free
+// not move keeps the orientation it had). A cell that already fails the test before the move
+// (a skewed or concave cell of the sample) has no orientation to keep and is not judged. The grid starts as a sample of a pleat-free
 // surface, so the grid after the move is pleat-free too, by induction from the Coons patch
 // of the boundary. (Checking the interpolating spline between the nodes as well was tried:
 // on the hard shapes of dbs-bench-folds it held back more than it saved.)

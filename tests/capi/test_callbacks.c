@@ -96,12 +96,12 @@ static void progress_rises_to_exactly_one(void **state) {
 
   assert_true(log->calls >= 3 && log->calls <= MAX_CALLS);
   assert_false(log->wrong_thread);
-  static const char *known[] = {"index", "evolve", "subdivide", "parameterize", "done"};
+  static const char *known[] = {"index", "evolve", "subdivide", "parameterize", "folds", "done"};
   for (size_t i = 0; i < log->calls; ++i) {
     assert_true(log->fractions[i] >= 0.0 && log->fractions[i] <= 1.0);
     if (i > 0) assert_true(log->fractions[i] >= log->fractions[i - 1]);
     int stage_known = 0;
-    for (int k = 0; k < 5; ++k) stage_known |= strcmp(log->stages[i], known[k]) == 0;
+    for (int k = 0; k < 6; ++k) stage_known |= strcmp(log->stages[i], known[k]) == 0;
     assert_true(stage_known);
   }
   assert_true(log->fractions[log->calls - 1] == 1.0);

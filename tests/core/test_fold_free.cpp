@@ -122,14 +122,14 @@ void noise_does_not_change_the_level_count(void**) {
 }
 
 void hard_shapes_stay_within_their_bounds(void**) {
-  // Folded reference triangles with the default options, 0.3 (u,v) of the bound above the
-  // figure measured when the guard, the seam correction and the seam-aware assignment
-  // landed; before them (0.2): mushroom 9.65%, tall dome 7.37%, fingers 4.08%, open box
-  // 0.21%, cone 1.27%, sphere cap 2.30%.
+  // Folded reference triangles with the default options: a little above the figures of 0.3
+  // (mushroom 7.23%, tall dome 8.24%, fingers 3.62%, open box 0.18%, cone 0.77%, sphere cap
+  // 0.10%); before the guard, the seam correction and the seam-aware assignment (0.2): 9.65%,
+  // 7.37%, 4.08%, 0.21%, 1.27%, 2.30%.
   const struct {
     const char* name;
     double max_share;
-  } bounds[] = {{"mushroom", 0.085}, {"tall-dome", 0.095}, {"fingers", 0.040}, {"open-box", 0.0025}, {"cone", 0.011}, {"sphere-cap", 0.009}};
+  } bounds[] = {{"mushroom", 0.078}, {"tall-dome", 0.088}, {"fingers", 0.040}, {"open-box", 0.0025}, {"cone", 0.0095}, {"sphere-cap", 0.003}};
   for (const auto& b : bounds) {
     const Run r = run(dbs_folds::fold_shape(b.name));
     assert_true(r.folds.share <= b.max_share);
@@ -142,15 +142,15 @@ void hard_shapes_stay_within_their_bounds(void**) {
 void sphere_cap_against_the_meshless_reference(void**) {
   // 270 degrees of a sphere, open only at its rim: no failure; the issue asks for no more
   // folds than a meshless method (k = 12 inverse-distance weights, one solve) on the same
-  // points. That is not met yet: the bound is today's figure (0.64% against the meshless
-  // 0.06%), so this checks only that it does not get worse.
+  // points. That is not met yet: the bound is a little above today's figure (0.10% against
+  // the meshless 0.06%), so this checks only that it does not get worse.
   const FoldShape shape = dbs_folds::sphere_cap();
   const Run r = run(shape);
   const dbs_folds::MeshlessReference meshless = dbs_folds::meshless_reference(shape);
   const dbs_folds::FoldCount reference = dbs_folds::fold_share(meshless.uv, shape.triangles);
   std::printf("sphere cap: libdbs %.2f%%, meshless %.2f%%\n", 100.0 * r.folds.share, 100.0 * reference.share);
   assert_true(reference.share <= 0.002);
-  assert_true(r.folds.share <= 0.009);
+  assert_true(r.folds.share <= 0.003);
 }
 
 void repair_on_the_hard_shapes(void**) {
@@ -190,10 +190,12 @@ void hard_shape_is_scale_and_thread_invariant(void**) {
   for (std::size_t i = 0; i < a.result.u.size(); ++i) worst = std::max({worst, std::abs(a.result.u[i] - scaled.result.u[i]), std::abs(a.result.v[i] - scaled.result.v[i])});
   std::printf("cone: (u,v) of the cloud x1000 differ by %.3g\n", worst);
   // Not the 1e-9 of the smooth clouds (test_recursive): on these shapes the iterations of the
-  // evolution amplify rounding, and 0.2 already differed by 3e-6 on the clean saddle with a
-  // single patch and by 5e-8 here; the guard's decisions are the same at both scales (the
-  // same nodes damped), and the (u,v) differ by 7e-7.
-  assert_true(worst <= 1e-5);
+  // evolution amplify rounding; 0.2 already differed by 3e-6 on the clean saddle with a
+  // single patch and by 5e-8 here. The guard's decisions are the same at both scales (the
+  // same nodes damped), and the (u,v) differ by 9e-5 since the guard leaves cells alone that
+  // already fail its test before the move (7e-7 when it judged them too, at 0.64% instead of
+  // 0.10% folds on the sphere cap).
+  assert_true(worst <= 2e-4);
 }
 
 }  // namespace
