@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_arguments.hpp"
 #include "dbs.h"
 
 namespace {
@@ -114,12 +115,7 @@ std::size_t parse_size(const std::string& text) {
   return static_cast<std::size_t>(value);
 }
 
-int parse_int(const std::string& option, const std::string& text) {
-  char* end = nullptr;
-  long value = std::strtol(text.c_str(), &end, 10);
-  if (end == text.c_str() || *end != '\0' || value < 0 || value > 1000) usage_error(option + ": '" + text + "' is not a small non-negative integer");
-  return static_cast<int>(value);
-}
+int parse_int(const std::string& option, const std::string& text) { return bench::parse_small_int(option, text, usage_error); }
 
 struct Settings {
   std::vector<const Surface*> surfaces{&kSurfaces[0], &kSurfaces[1]};

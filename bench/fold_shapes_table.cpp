@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_arguments.hpp"
 #include "dbs.h"
 #include "fold_shapes.hpp"
 #include "meshless_reference.hpp"
@@ -37,12 +38,7 @@ using dbs_folds::FoldShape;
   std::exit(2);
 }
 
-int parse_int(const std::string& option, const std::string& text) {
-  char* end = nullptr;
-  long value = std::strtol(text.c_str(), &end, 10);
-  if (end == text.c_str() || *end != '\0' || value < 0 || value > 1000) usage_error(option + ": '" + text + "' is not a small non-negative integer");
-  return static_cast<int>(value);
-}
+int parse_int(const std::string& option, const std::string& text) { return bench::parse_small_int(option, text, usage_error); }
 
 struct Settings {
   std::vector<std::string> shapes = dbs_folds::fold_shape_names();
