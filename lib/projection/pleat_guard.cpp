@@ -97,7 +97,7 @@ GuardedMove move_without_pleats(const Grid& start, const Grid& directions, const
             if (a == 0 || b == 0 || a == start.nu - 1 || b == start.nv - 1) continue;  // border nodes do not move
             const std::size_t k = static_cast<std::size_t>(b) * start.nu + a;
             scale[k] *= factor;
-            damped[k] = 1;
+            if (offsets[k] != 0.0) damped[k] = 1;  // a node that was not to move is not held back
           }
       }
   }
