@@ -136,7 +136,7 @@ extern "C" {
 /* ---- version ------------------------------------------------------------------ */
 /* Version of this header (\since 0.1). */
 #define DBS_VERSION_MAJOR 0
-#define DBS_VERSION_MINOR 3
+#define DBS_VERSION_MINOR 4
 #define DBS_VERSION_PATCH 0
 /** MAJOR*10000 + MINOR*100 + PATCH */
 #define DBS_VERSION_NUMBER (DBS_VERSION_MAJOR * 10000 + DBS_VERSION_MINOR * 100 + DBS_VERSION_PATCH)
