@@ -11,7 +11,7 @@ module dbs
   implicit none
 
   ! ---- version ----------------------------------------------------------------------
-  integer(c_int32_t), parameter :: DBS_VERSION_MAJOR = 0, DBS_VERSION_MINOR = 3, DBS_VERSION_PATCH = 0
+  integer(c_int32_t), parameter :: DBS_VERSION_MAJOR = 0, DBS_VERSION_MINOR = 4, DBS_VERSION_PATCH = 0
   integer(c_int32_t), parameter :: DBS_FEATURE_DRACO = 0
   integer(c_int32_t), parameter :: DBS_FEATURE_VALIDATION = 1
   integer(c_int32_t), parameter :: DBS_FEATURE_REPORT = 2

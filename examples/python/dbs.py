@@ -28,7 +28,7 @@ lib = _load_library()
 # ---- constants of dbs.h (the DBS_ prefix dropped) --------------------------------------------
 
 VERSION_MAJOR = 0
-VERSION_MINOR = 3
+VERSION_MINOR = 4
 VERSION_PATCH = 0
 
 OK = 0
