@@ -30,11 +30,27 @@ struct Location {
   double t;
 };
 
-Location locate(const std::vector<double>& cumulative, double s) {
+/// The first index whose cumulative length exceeds x (std::upper_bound over `cumulative`):
+/// a few steps from the first vertex past x's bucket, or a binary search where vertices
+/// crowd into one bucket.
+std::size_t first_above(const std::vector<double>& cumulative, const Polyline::Lookup& lookup, double x) {
+  constexpr int kMaxSteps = 8;
+  const std::vector<std::size_t>& bucket_first = lookup.bucket_first;
+  const std::size_t n = cumulative.size(), buckets = bucket_first.size() - 1;
+  const double position = x * lookup.buckets_per_length;
+  std::size_t i = bucket_first[position > 0.0 ? std::min(buckets - 1, static_cast<std::size_t>(position)) : 0];
+  for (int step = 0; step < kMaxSteps; ++step) {
+    if (i > 0 && cumulative[i - 1] > x) --i;
+    else if (i < n && cumulative[i] <= x) ++i;
+    else return i;
+  }
+  return static_cast<std::size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), x) - cumulative.begin());
+}
+
+Location locate(const std::vector<double>& cumulative, const Polyline::Lookup& lookup, double s) {
   const std::size_t last = cumulative.size() - 2;
   const double total = cumulative.back(), x = s * total;
-  const auto above = std::upper_bound(cumulative.begin(), cumulative.end(), x);
-  std::size_t i = static_cast<std::size_t>(above - cumulative.begin());
+  std::size_t i = first_above(cumulative, lookup, x);
   i = std::min(i == 0 ? 0 : i - 1, last);
   const double near = 8 * std::numeric_limits<double>::epsilon() * total;
   if (x - cumulative[i] <= near || cumulative[i + 1] - x <= near) {
@@ -43,6 +59,8 @@ Location locate(const std::vector<double>& cumulative, double s) {
     const double s0 = vertex_param(cumulative, i), s1 = vertex_param(cumulative, i + 1);
     return {i, s1 > s0 ? (s - s0) / (s1 - s0) : 0.0};
   }
+  // A division, not a multiplication by a stored inverse: the rounding of t is part of
+  // what every surface evaluation returns.
   const double len = cumulative[i + 1] - cumulative[i];
   return {i, len > 0.0 ? (x - cumulative[i]) / len : 0.0};
 }
@@ -71,11 +89,20 @@ Polyline::Polyline(std::vector<Vec3> points) : points_(std::move(points)) {
   const double total = cumulative_.back();
   if (!(total > 0.0)) fail(ErrorCode::Degenerate, "polyline has zero length (all its points coincide)");
   if (!std::isfinite(total)) fail(ErrorCode::NonFinite, "polyline length overflows");
+  const std::size_t buckets = points_.size() - 1;
+  lookup_.buckets_per_length = static_cast<double>(buckets) / total;
+  lookup_.bucket_first.resize(buckets + 1);
+  std::size_t vertex = 0;
+  for (std::size_t b = 0; b <= buckets; ++b) {
+    const double x = total * (static_cast<double>(b) / static_cast<double>(buckets));
+    while (vertex < cumulative_.size() && cumulative_[vertex] <= x) ++vertex;
+    lookup_.bucket_first[b] = vertex;
+  }
 }
 
 Vec3 Polyline::at(double s) const {
   s = clamp_unit(s);
-  return point_at(points_, s, locate(cumulative_, s));
+  return point_at(points_, s, locate(cumulative_, lookup_, s));
 }
 
 Vec3 Polyline::tangent(double s) const {
@@ -86,7 +113,7 @@ Vec3 Polyline::tangent(double s) const {
 
 Vec3 Polyline::at(double s, Vec3& d_ds) const {
   s = clamp_unit(s);
-  const Location loc = locate(cumulative_, s);
+  const Location loc = locate(cumulative_, lookup_, s);
   // locate returns a segment of non-zero length, except for s = 1 when the polyline ends
   // on repeated points: step back to the last segment with a direction then (one exists,
   // the length being positive).
@@ -99,7 +126,7 @@ Vec3 Polyline::at(double s, Vec3& d_ds) const {
 std::pair<Polyline, Polyline> Polyline::split(double s) const {
   if (!(s > 0.0 && s < 1.0)) fail(ErrorCode::InvalidArgument, "polyline split at s=" + std::to_string(s) + ", outside (0,1)");
   std::vector<Vec3> first, second;
-  const std::size_t i = locate(cumulative_, s).segment;
+  const std::size_t i = locate(cumulative_, lookup_, s).segment;
   std::size_t vertex = points_.size();  // the existing vertex at s, if any
   if (i > 0 && s - vertex_param(cumulative_, i) <= kVertexSnap) vertex = i;
   else if (i + 2 < points_.size() && vertex_param(cumulative_, i + 1) - s <= kVertexSnap) vertex = i + 1;

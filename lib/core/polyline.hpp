@@ -1,5 +1,6 @@
 // A polyline parameterized by normalized arc length s in [0,1].
 #pragma once
+
 #include <utility>
 #include <vector>
 
@@ -33,9 +34,19 @@ class Polyline {
   /// Copy with the first / last vertex replaced (used to make corners coincide exactly).
   Polyline with_ends(const Vec3& first, const Vec3& last) const;
 
+  /// Finding the segment of s in O(1): bucket b holds the first vertex whose cumulative
+  /// length exceeds b / buckets of the total (one bucket per segment), so a few steps from
+  /// there find it (the result is that of a binary search; this lookup is on the path of
+  /// every surface evaluation).
+  struct Lookup {
+    double buckets_per_length = 0.0;
+    std::vector<std::size_t> bucket_first;
+  };
+
  private:
   std::vector<Vec3> points_;
   std::vector<double> cumulative_;  // arc length up to each vertex
+  Lookup lookup_;
 };
 
 }  // namespace dbs

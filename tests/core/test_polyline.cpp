@@ -1,4 +1,5 @@
 // Polyline: arc-length parameterization, exact ends and vertices, split, nearest point.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -38,6 +39,31 @@ double arc_length(const Polyline& p) {
   double len = 0;
   for (std::size_t i = 1; i < p.size(); ++i) len += (p.points()[i] - p.points()[i - 1]).norm();
   return len;
+}
+
+// A straight polyline whose segments shrink geometrically over six decades and then grow
+// again, so that most vertices crowd into a few lookup buckets: at(s) must still be the
+// point at arc length s L (any wrong segment would be far off), and every vertex parameter
+// must give that vertex exactly.
+void test_at_on_crowded_vertices(void**) {
+  std::vector<Vec3> pts{Vec3(0, 0, 0)};
+  double x = 0.0, step = 1.0;
+  for (int k = 0; k < 400; ++k, step *= (k < 200 ? 0.933 : 1.0 / 0.933)) pts.emplace_back(x += step, 0.0, 0.0);
+  const Polyline p(pts);
+  const double length = p.length();
+  double worst = 0.0;
+  unsigned seed = 12345u;
+  for (int k = 0; k < 20000; ++k) {
+    seed = seed * 1103515245u + 12345u;
+    const double s = static_cast<double>(seed >> 8) / static_cast<double>(1u << 24);
+    worst = std::max(worst, std::fabs(p.at(s).x() - s * length));
+  }
+  assert_true(worst <= 1e-13 * length);
+  double cumulative = 0.0;
+  for (std::size_t i = 1; i + 1 < pts.size(); ++i) {
+    cumulative += (pts[i] - pts[i - 1]).norm();
+    assert_true(p.at(cumulative / length) == pts[i]);
+  }
 }
 
 void test_length_and_ends(void**) {
@@ -216,6 +242,7 @@ int main() {
       cmocka_unit_test(test_length_and_ends),
       cmocka_unit_test(test_at_is_arc_length_fraction),
       cmocka_unit_test(test_at_vertices_exact),
+      cmocka_unit_test(test_at_on_crowded_vertices),
       cmocka_unit_test(test_tangent),
       cmocka_unit_test(test_repeated_points),
       cmocka_unit_test(test_split_lengths),
