@@ -88,17 +88,18 @@ class Driver {
     result_.accuracy = options_.noise_floor ? std::max(result_.requested_accuracy, floor) : result_.requested_accuracy;
     progress_.report(kIndexEnd, "index");
 
+    start_parameters();
     std::vector<int> level_ids{0};
     for (int level = 0; !level_ids.empty(); ++level) {
       level_ids = process_level(level, level_ids);
       result_.levels = level + 1;
     }
     const auto parameterize_start = Clock::now();
-    parameterize_points();
+    project_across_borders();
     result_.repaired.assign(points_.size(), 0);
     if (options_.repair) result_.repaired_points = repair_far_points(result_, points_, threads_);
     summarize();
-    result_.stage_seconds.parameterize = seconds_since(parameterize_start);
+    result_.stage_seconds.parameterize += seconds_since(parameterize_start);
     const double levels_end = level_progress_end(result_.levels - 1);
     progress_.report(levels_end + (1.0 - levels_end) * kFoldsShare, "folds");
     const auto folds_start = Clock::now();
@@ -173,6 +174,20 @@ class Driver {
     projectors.clear();
     result_.stage_seconds.subdivide += seconds_since(subdivide_start);
 
+    // The patches that stay leaves parameterize their points now (A2, first part), which also
+    // measures each of them on all its points.
+    const auto leaves_start = Clock::now();
+    progress_.report(begin + 0.9 * (end - begin), "parameterize");
+    std::size_t next_split = 0;
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+      if (next_split < split.size() && static_cast<std::size_t>(split[next_split]) == k) {
+        ++next_split;
+        continue;
+      }
+      project_leaf(result_.patches[ids[k]]);
+    }
+    result_.stage_seconds.parameterize += seconds_since(leaves_start);
+
     std::vector<int> next;
     for (std::size_t s = 0; s < split.size(); ++s) {
       const int parent_id = ids[static_cast<std::size_t>(split[s])];
@@ -218,13 +233,14 @@ class Driver {
   /// Algorithm A2, seam-aware: each point is projected onto every leaf whose subcloud holds
   /// it. A foot inside its leaf (an orthogonal projection) is preferred to one clamped to a
   /// leaf's border (better_foot); among feet of one kind the least distance wins (ties: the
-  /// lower leaf id, as leaves are visited in id order). A point whose best foot is still
-  /// clamped is then projected onto the leaves across the border it was clamped to (the
-  /// leaves whose rectangle holds the clamped foot's global (u,v)): near a seam, an apex
-  /// shared by leaf corners or a feature the leaf's surface does not reach, its orthogonal
-  /// foot usually lies on the neighbour, and snapping it to the border collapses many points
-  /// onto one (u,v).
-  void parameterize_points() {
+  /// lower leaf id, as leaves are visited in id order: level by level, in id order within a
+  /// level, which is the order of the ids). A point whose best foot is still clamped is then
+  /// projected onto the leaves across the border it was clamped to (the leaves whose
+  /// rectangle holds the clamped foot's global (u,v)): near a seam, an apex shared by leaf
+  /// corners or a feature the leaf's surface does not reach, its orthogonal foot usually
+  /// lies on the neighbour, and snapping it to the border collapses many points onto one
+  /// (u,v).
+  void start_parameters() {
     const std::size_t n = points_.size();
     result_.u.assign(n, 0.0);
     result_.v.assign(n, 0.0);
@@ -232,19 +248,36 @@ class Driver {
     result_.patch.assign(n, -1);
     result_.level.assign(n, -1);
     inside_.assign(n, 0);
+  }
+
+  /// The first part of A2 for one leaf: its subcloud's feet on it, kept where better; the
+  /// leaf's mean and max distance (over all its points, replacing the sample's figures of
+  /// the evolution) and whether it met the target.
+  void project_leaf(Patch& leaf) {
+    const SurfaceProjector projector(leaf.surface);
+    std::vector<Foot> feet(leaf.subcloud.size());
+    parallel_for(leaf.subcloud.size(), threads_, [&](std::size_t k) { feet[k] = projector.project(points_[leaf.subcloud[k]]); });
+    // In subcloud order, so that neither the sums nor the choices depend on the thread count.
+    double sum = 0.0, max = 0.0;
+    for (std::size_t k = 0; k < feet.size(); ++k) {
+      sum += feet[k].distance;
+      max = std::max(max, feet[k].distance);
+      consider(leaf.subcloud[k], leaf, feet[k]);
+    }
+    if (!feet.empty()) {
+      leaf.mean_distance = sum / static_cast<double>(feet.size());
+      leaf.max_distance = max;
+      leaf.accurate = leaf.mean_distance <= result_.accuracy;
+    }
+  }
+
+  /// The second part of A2: points whose best foot is clamped try the leaves across.
+  void project_across_borders() {
+    const std::size_t n = points_.size();
     std::vector<int> leaves;
     for (const Patch& p : result_.patches)
       if (p.is_leaf()) leaves.push_back(p.id);
     const double begin = level_progress_end(result_.levels - 1);
-    for (std::size_t l = 0; l < leaves.size(); ++l) {
-      progress_.report(begin + (1.0 - begin) * 0.8 * static_cast<double>(l) / leaves.size(), "parameterize");
-      const Patch& leaf = result_.patches[leaves[l]];
-      SurfaceProjector projector(leaf.surface);
-      parallel_for(leaf.subcloud.size(), threads_, [&](std::size_t k) {
-        const std::size_t i = leaf.subcloud[k];
-        consider(i, leaf, projector.project(points_[i]));
-      });
-    }
     // Every point belongs to some leaf's subcloud (A4 never drops one); should one be missed,
     // it is treated like a clamped point: it tries every leaf below.
     std::vector<std::size_t> clamped;

@@ -30,7 +30,7 @@ struct ChildTest {
   double near_limit;  // near x the child's bounding-box diagonal
   double own_limit;   // own x that diagonal
 
-  ChildTest(const BaseSurface& surface, double near, double own) : projector(std::make_unique<SurfaceProjector>(surface)) {
+  ChildTest(const BaseSurface& surface, double near, double own) : projector(std::make_unique<SurfaceProjector>(surface, FootPrecision::Distance)) {
     // The limits come from the child's box in the frame of its corners (unchanged by a
     // rigid motion); the axis-aligned box only speeds up the search.
     CornerFrameBox turning(surface.boundary());

@@ -15,8 +15,10 @@ namespace {
 
 constexpr int kMaxIterations = 50;
 constexpr int kMaxHalvings = 40;
-/// The iteration stops once the parameters are estimated to be this close to the foot.
-constexpr double kConverged = 1e-12;
+/// The iteration stops once the parameters are estimated to be this close to the foot
+/// (FootPrecision::Parameters, FootPrecision::Distance).
+constexpr double kConvergedParameters = 1e-12;
+constexpr double kConvergedDistance = 1e-7;
 /// Steps in (u,v) shorter than this are taken without a line search (see take_step).
 constexpr double kNearFoot = 1e-6;
 /// Growth of |S - q|^2 that counts as rounding for a step near the foot, in units of
@@ -30,11 +32,11 @@ double clamp_unit(double x) { return std::min(1.0, std::max(0.0, x)); }
 
 /// Gauss-Newton converges linearly near the foot, with a rate r estimated from two
 /// successive step lengths; the distance left to the foot is then about step r / (1 - r).
-bool converged(double step, double previous) {
-  if (step <= kConverged) return true;
+bool converged(double step, double previous, double tolerance) {
+  if (step <= tolerance) return true;
   if (!std::isfinite(previous)) return false;
   const double rate = step / previous;
-  return rate < 0.5 && step * rate / (1.0 - rate) <= kConverged;
+  return rate < 0.5 && step * rate / (1.0 - rate) <= tolerance;
 }
 
 /// True when coordinate c of x sits on a bound of [0,1] and the gradient g_c = S_c.(S - q)
@@ -54,13 +56,14 @@ struct Iterate {
 
 struct SurfaceProjector::Impl {
   const BaseSurface& surface;
+  double tolerance;
   int samples;
   std::vector<Vec3> grid;  // samples x samples, u fastest
   CloudIndex index;
   /// Arc length of a side between two consecutive samples on it.
   std::array<double, 4> side_step;
 
-  Impl(const BaseSurface& s, int n) : surface(s), samples(n), grid(s.sample(n, n).points), index(grid) {
+  Impl(const BaseSurface& s, double t, int n) : surface(s), tolerance(t), samples(n), grid(s.sample(n, n).points), index(grid) {
     for (int side = 0; side < 4; ++side) side_step[side] = surface.boundary().side(static_cast<Side>(side)).length() / (samples - 1);
   }
 
@@ -124,7 +127,7 @@ struct SurfaceProjector::Impl {
       }
       const double length = step.norm();
       if (!(length > 0.0) || !take_step(q, it, step, length <= kNearFoot)) break;
-      if (converged(length, previous)) break;
+      if (converged(length, previous, tolerance)) break;
       previous = length;
     }
     held = held_coordinates(it, gradient(q, it));
@@ -150,7 +153,7 @@ struct SurfaceProjector::Impl {
       if (!(h > 0.0)) break;
       const double step = -tangent.dot(it.s.p - q) / h, length = std::abs(step);
       if (!(length > 0.0) || !take_step(q, it, along_u ? Vec2(step, 0.0) : Vec2(0.0, step), length <= kNearFoot)) break;
-      if (converged(length, previous)) break;
+      if (converged(length, previous, tolerance)) break;
       previous = length;
     }
     return it;
@@ -189,9 +192,9 @@ struct SurfaceProjector::Impl {
   }
 };
 
-SurfaceProjector::SurfaceProjector(const BaseSurface& surface, int samples) {
+SurfaceProjector::SurfaceProjector(const BaseSurface& surface, FootPrecision precision, int samples) {
   if (samples < 2) fail(ErrorCode::InvalidArgument, "SurfaceProjector: samples = " + std::to_string(samples) + ", at least 2 needed");
-  impl_ = std::make_unique<Impl>(surface, samples);
+  impl_ = std::make_unique<Impl>(surface, precision == FootPrecision::Parameters ? kConvergedParameters : kConvergedDistance, samples);
 }
 
 SurfaceProjector::~SurfaceProjector() = default;
