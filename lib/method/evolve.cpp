@@ -15,7 +15,7 @@ constexpr int kMaxDampedSteps = 4;
 
 }  // namespace
 
-void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean, double& out_max) {
+void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean, double& out_max, WorkMeter* meter) {
   stride = std::max<std::size_t>(stride, 1);
   const std::size_t count = (indices.size() + stride - 1) / stride;
   out_mean = 0.0;
@@ -23,7 +23,10 @@ void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& poin
   if (count == 0) return;
   SurfaceProjector projector(surface, FootPrecision::Distance);
   std::vector<double> distance(count);
-  parallel_for(count, threads, [&](std::size_t k) { distance[k] = projector.project(points[indices[k * stride]]).distance; });
+  metered_for(meter, count, threads, [&](std::size_t k) {
+    distance[k] = projector.project(points[indices[k * stride]]).distance;
+    count_work(meter);
+  });
   // Summed serially in index order so the result does not depend on the thread count.
   double sum = 0.0;
   for (double d : distance) {
@@ -51,13 +54,14 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
     for (int step = 0; step < kMaxDampedSteps; ++step) {
       std::size_t damped = 0;
       Grid projected = project_grid(patch.surface, grid, grid, projector, settings.gamma, &damped);
+      count_work(settings.meter, static_cast<std::uint64_t>(grid) * grid);
       patch.surface = BaseSurface(patch.surface.boundary(), projected);
       patch.grid = std::move(projected);
       ++patch.iterations;
       patch.damped_nodes += damped;
       if (damped == 0) break;
     }
-    measure_distances(patch.surface, points, patch.subcloud, stride, settings.threads, mean, max);
+    measure_distances(patch.surface, points, patch.subcloud, stride, settings.threads, mean, max, settings.meter);
     if (tick) tick(grid);
     if (mean <= settings.accuracy || grid >= settings.max_grid) break;
   }

@@ -8,6 +8,7 @@
 
 #include "directed_projection.hpp"
 #include "patch.hpp"
+#include "work_meter.hpp"
 
 namespace dbs {
 
@@ -22,6 +23,8 @@ struct EvolveSettings {
   /// and twice as many; all of them in a smaller subcloud): the standard error of such a
   /// mean is a few percent of it, and measuring costs a small share of a projection step.
   std::size_t error_sample = 4096;
+  /// Counts a unit per grid node projected and per point measured (may be null).
+  WorkMeter* meter = nullptr;
 };
 
 /// Called after each grid evolution with the grid size reached; may throw to cancel.
@@ -34,6 +37,6 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
 
 /// Mean and maximum distance of points[indices[k]] (k strided by `stride`) to `surface`;
 /// deterministic for any thread count.
-void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean, double& out_max);
+void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean, double& out_max, WorkMeter* meter = nullptr);
 
 }  // namespace dbs

@@ -317,7 +317,7 @@ std::size_t count_coincident(const std::vector<double>& u, const std::vector<dou
   return count;
 }
 
-FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, double noise_sigma, int threads) {
+FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, double noise_sigma, int threads, WorkMeter* meter) {
   check_sizes(points.size(), u, v, "measure_folds");
   if (!std::isfinite(noise_sigma)) fail(ErrorCode::NonFinite, "measure_folds: the noise level is not finite");
   if (noise_sigma < 0.0) fail(ErrorCode::InvalidArgument, "measure_folds: the noise level " + std::to_string(noise_sigma) + " is negative");
@@ -350,7 +350,7 @@ FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<dou
   std::vector<std::uint32_t> graph(n * kGraphNeighbours, kNoNeighbour);
   const Levels levels(points, index);
   const std::size_t chunks = std::min<std::size_t>(static_cast<std::size_t>(workers), n);
-  parallel_for(chunks, workers, [&](std::size_t c) {
+  metered_for(meter, chunks, workers, [&](std::size_t c) {
     std::vector<std::size_t> nb;
     std::vector<double> d2, ratios;
     std::vector<Neighbour> near;
@@ -372,6 +372,7 @@ FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<dou
         levels.within(i, kRetryRadius * reach, expected(kRetryRadius * reach), nb);
         local[i] = analyse(points, u, v, i, nb, near, ratios);
       }
+      count_work(meter);
     }
   });
 

@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "geometry.hpp"
+#include "work_meter.hpp"
 
 namespace dbs {
 
@@ -77,7 +78,7 @@ struct FoldMeasure {
 /// level in cloud units (0: unknown or noise-free); threads as Options::threads (0 = all cores).
 /// Throws Error(InvalidArgument) when the sizes differ or noise_sigma < 0, Error(NonFinite) for
 /// a non-finite point, parameter or sigma. Fewer than 4 distinct points: all undecided.
-FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, double noise_sigma, int threads);
+FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, double noise_sigma, int threads, WorkMeter* meter = nullptr);
 
 /// Number of points i for which some j != i has |u_i - u_j| <= 1e-12 and |v_i - v_j| <= 1e-12
 /// (exact duplicates included). O(N log N). Throws Error(InvalidArgument) when the sizes differ.

@@ -33,6 +33,9 @@ struct Options {
   int repair = 0;
   ProgressFn progress;
   LevelFn on_level;
+  /// For tests: called before each progress report with its stage and the work units
+  /// (points projected, grid nodes solved) counted so far in the run.
+  std::function<void(const char* stage, unsigned long long units)> work_probe;
 };
 
 /// Option identifiers; values equal the DBS_OPT_* numbers of the C API.

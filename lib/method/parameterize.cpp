@@ -6,7 +6,6 @@
 #include <limits>
 #include <memory>
 #include <numeric>
-#include <thread>
 
 #include "cloud_index.hpp"
 #include "corner_frame.hpp"
@@ -20,6 +19,7 @@
 #include "subcloud.hpp"
 #include "subdivide.hpp"
 #include "surface_projection.hpp"
+#include "work_meter.hpp"
 
 namespace dbs {
 namespace {
@@ -61,7 +61,8 @@ double cloud_size(const PointCloud& cloud, const Boundary& boundary) {
 class Driver {
  public:
   Driver(const PointCloud& cloud, const Boundary& boundary, const Options& options)
-      : points_(cloud.points()), options_(options), progress_(options.progress), threads_(resolve_threads(options.threads)), caller_(std::this_thread::get_id()) {
+      : points_(cloud.points()), options_(options), progress_(options.progress), threads_(resolve_threads(options.threads)) {
+    meter_.set_report([this] { report_work(); });
     result_.requested_accuracy = options.accuracy > 0.0 ? options.accuracy : options.relative_accuracy * cloud_size(cloud, boundary);
     Patch root{BaseSurface(boundary)};
     root.subcloud.resize(points_.size());
@@ -71,7 +72,7 @@ class Driver {
 
   Result run() {
     const auto start = Clock::now();
-    progress_.report(0.0, "index");
+    begin_stage("index", 0.0, kIndexEnd, 0);
     {
       CloudIndex index(points_);
       const NoiseEstimate noise = estimate_noise(index, threads_);
@@ -86,7 +87,7 @@ class Driver {
     // to the last level, folds), so it is raised to a safety factor above it.
     const double floor = kNoiseFloorFactor * result_.noise * std::sqrt(2.0 / kPi);
     result_.accuracy = options_.noise_floor ? std::max(result_.requested_accuracy, floor) : result_.requested_accuracy;
-    progress_.report(kIndexEnd, "index");
+    report(kIndexEnd, "index");
 
     start_parameters();
     std::vector<int> level_ids{0};
@@ -101,7 +102,7 @@ class Driver {
     summarize();
     result_.stage_seconds.parameterize += seconds_since(parameterize_start);
     const double levels_end = level_progress_end(result_.levels - 1);
-    progress_.report(levels_end + (1.0 - levels_end) * kFoldsShare, "folds");
+    begin_stage("folds", levels_end + (1.0 - levels_end) * kFoldsShare, 1.0, std::min(points_.size(), kFoldJudgedPoints));
     const auto folds_start = Clock::now();
     const FoldMeasure folds = judge_folds();
     result_.judged_points = folds.points;
@@ -111,7 +112,7 @@ class Driver {
     result_.folded_share = folds.folded_share;
     result_.stage_seconds.folds = seconds_since(folds_start);
     result_.seconds = seconds_since(start);
-    progress_.finish();
+    report(1.0, "done");
     return std::move(result_);
   }
 
@@ -121,7 +122,6 @@ class Driver {
   std::vector<int> process_level(int level, const std::vector<int>& ids) {
     const double begin = level == 0 ? kIndexEnd : level_progress_end(level - 1);
     const double end = level_progress_end(level);
-    progress_.report(begin, "evolve");
     const auto evolve_start = Clock::now();
 
     // One index per patch over its subcloud, shared by evolution and subdivision.
@@ -134,24 +134,18 @@ class Driver {
     settings.max_grid = options_.max_grid;
     settings.gamma = options_.smoothing;
     settings.threads = std::max(1, threads_ / std::max(outer, 1));
-    const int grid_steps = std::max(1, options_.max_grid - options_.initial_grid + 1);
-    parallel_for(ids.size(), outer, [&](std::size_t k) {
+    settings.meter = &meter_;
+    std::uint64_t expected = 0;
+    for (int id : ids) expected += evolve_work(result_.patches[id].subcloud.size());
+    begin_stage("evolve", begin, begin + 0.8 * (end - begin), expected);
+    meter_.run(ids.size(), outer, [&](std::size_t k) {
       Patch& patch = result_.patches[ids[k]];
       indices[k] = std::make_unique<CloudIndex>(points_, patch.subcloud);
       projectors[k] = std::make_unique<DirectedProjector>(*indices[k], result_.length_scale);
-      // Progress inside a patch only when it runs on the caller's thread (a level of one patch).
-      EvolveTick tick;
-      if (std::this_thread::get_id() == caller_) {
-        tick = [&, begin, end](int grid) {
-          const double done = std::min(1.0, static_cast<double>(grid - options_.initial_grid + 1) / grid_steps);
-          progress_.report(begin + 0.8 * (end - begin) * done, "evolve");
-        };
-      }
-      evolve_patch(patch, points_, *projectors[k], settings, tick);
+      evolve_patch(patch, points_, *projectors[k], settings);
     });
     for (int id : ids) result_.iterations += result_.patches[id].iterations;
     result_.stage_seconds.evolve += seconds_since(evolve_start);
-    progress_.report(begin + 0.8 * (end - begin), "subdivide");
     const auto subdivide_start = Clock::now();
 
     std::vector<int> split;
@@ -160,14 +154,17 @@ class Driver {
       if (!p.accurate && level < options_.max_level && p.point_count >= kMinPointsToSubdivide) split.push_back(static_cast<int>(k));
     }
     std::vector<std::unique_ptr<std::array<Patch, 4>>> owned(split.size());
-    parallel_for(split.size(), std::min<int>(threads_, static_cast<int>(split.size())), [&](std::size_t s) {
+    expected = 0;
+    for (int k : split) expected += result_.patches[ids[static_cast<std::size_t>(k)]].subcloud.size();
+    begin_stage("subdivide", begin + 0.8 * (end - begin), begin + 0.9 * (end - begin), expected);
+    meter_.run(split.size(), std::min<int>(threads_, static_cast<int>(split.size())), [&](std::size_t s) {
       const std::size_t k = static_cast<std::size_t>(split[s]);
       const Patch& parent = result_.patches[ids[k]];
       owned[s] = std::make_unique<std::array<Patch, 4>>(subdivide_patch(parent, *projectors[k], options_.smoothing, options_.initial_grid));
       std::array<Patch, 4>& quad = *owned[s];
       const std::array<const BaseSurface*, 4> surfaces{{&quad[0].surface, &quad[1].surface, &quad[2].surface, &quad[3].surface}};
       const int inner = std::max(1, threads_ / std::max<int>(1, static_cast<int>(split.size())));
-      std::array<std::vector<std::size_t>, 4> parts = split_subcloud(points_, parent.subcloud, surfaces, options_.subcloud_near, options_.subcloud_own, inner);
+      std::array<std::vector<std::size_t>, 4> parts = split_subcloud(points_, parent.subcloud, surfaces, options_.subcloud_near, options_.subcloud_own, inner, &meter_);
       for (int c = 0; c < 4; ++c) quad[c].subcloud = std::move(parts[c]);
     });
     indices.clear();
@@ -177,7 +174,12 @@ class Driver {
     // The patches that stay leaves parameterize their points now (A2, first part), which also
     // measures each of them on all its points.
     const auto leaves_start = Clock::now();
-    progress_.report(begin + 0.9 * (end - begin), "parameterize");
+    expected = 0;
+    for (std::size_t k = 0, next = 0; k < ids.size(); ++k) {
+      if (next < split.size() && static_cast<std::size_t>(split[next]) == k) ++next;
+      else expected += result_.patches[ids[k]].subcloud.size();
+    }
+    begin_stage("parameterize", begin + 0.9 * (end - begin), end, expected);
     std::size_t next_split = 0;
     for (std::size_t k = 0; k < ids.size(); ++k) {
       if (next_split < split.size() && static_cast<std::size_t>(split[next_split]) == k) {
@@ -209,16 +211,16 @@ class Driver {
       for (int id : ids) view.push_back(&result_.patches[id]);
       if (options_.on_level(level, view)) fail(ErrorCode::Cancelled, "cancelled by the level callback after level " + std::to_string(level));
     }
-    progress_.report(end, "subdivide");
+    report(end, "parameterize");
     return next;
   }
 
   /// The fold measure of the result on at most kFoldJudgedPoints points, evenly strided over
   /// the input order (a sparser cloud of the same surface: the measure sizes its
   /// neighbourhoods from the spacing), so that it costs a bounded share of a large run.
-  FoldMeasure judge_folds() const {
+  FoldMeasure judge_folds() {
     const std::size_t n = points_.size();
-    if (n <= kFoldJudgedPoints) return measure_folds(points_, result_.u, result_.v, result_.noise, threads_);
+    if (n <= kFoldJudgedPoints) return measure_folds(points_, result_.u, result_.v, result_.noise, threads_, &meter_);
     std::vector<Vec3> points;
     std::vector<double> u, v;
     for (std::size_t k = 0; k < kFoldJudgedPoints; ++k) {
@@ -227,7 +229,7 @@ class Driver {
       u.push_back(result_.u[i]);
       v.push_back(result_.v[i]);
     }
-    return measure_folds(points, u, v, result_.noise, threads_);
+    return measure_folds(points, u, v, result_.noise, threads_, &meter_);
   }
 
   /// Algorithm A2, seam-aware: each point is projected onto every leaf whose subcloud holds
@@ -256,7 +258,10 @@ class Driver {
   void project_leaf(Patch& leaf) {
     const SurfaceProjector projector(leaf.surface);
     std::vector<Foot> feet(leaf.subcloud.size());
-    parallel_for(leaf.subcloud.size(), threads_, [&](std::size_t k) { feet[k] = projector.project(points_[leaf.subcloud[k]]); });
+    meter_.run(leaf.subcloud.size(), threads_, [&](std::size_t k) {
+      feet[k] = projector.project(points_[leaf.subcloud[k]]);
+      meter_.add();
+    });
     // In subcloud order, so that neither the sums nor the choices depend on the thread count.
     double sum = 0.0, max = 0.0;
     for (std::size_t k = 0; k < feet.size(); ++k) {
@@ -291,7 +296,7 @@ class Driver {
       if (!missed.empty()) project_onto(leaves[0], missed);
       return;
     }
-    progress_.report(begin + (1.0 - begin) * 0.9, "parameterize");
+    begin_stage("parameterize", begin + (1.0 - begin) * 0.9, begin + (1.0 - begin) * kFoldsShare, clamped.size());
     // Across the border: each leaf takes the clamped points whose foot lies on its rectangle.
     std::vector<std::vector<std::size_t>> across(result_.patches.size());
     for (std::size_t i : clamped) {
@@ -308,7 +313,11 @@ class Driver {
   void project_onto(int id, const std::vector<std::size_t>& ids) {
     const Patch& leaf = result_.patches[id];
     const SurfaceProjector projector(leaf.surface);
-    parallel_for(ids.size(), threads_, [&](std::size_t k) { consider(ids[k], leaf, projector.project(points_[ids[k]])); });
+    // ids are distinct: each body touches only its own point's state.
+    meter_.run(ids.size(), threads_, [&](std::size_t k) {
+      consider(ids[k], leaf, projector.project(points_[ids[k]]));
+      meter_.add();
+    });
   }
 
   /// A rectangle of the domain holding (u,v), its border included (to rounding).
@@ -360,11 +369,46 @@ class Driver {
     }
   }
 
+  /// Work units expected to evolve a patch of `points` points (grid nodes and measured
+  /// points over its grid sizes), for the progress fraction only.
+  std::uint64_t evolve_work(std::size_t points) const {
+    const std::uint64_t steps = static_cast<std::uint64_t>(std::max(1, options_.max_grid - options_.initial_grid + 1));
+    const std::uint64_t measured = std::min<std::uint64_t>(points, 2 * EvolveSettings().error_sample);
+    const std::uint64_t nodes = static_cast<std::uint64_t>(options_.max_grid) * static_cast<std::uint64_t>(options_.max_grid);
+    return steps * (measured + nodes);
+  }
+
+  /// Reports `fraction` of `stage` (through the test probe too).
+  void report(double fraction, const char* stage) {
+    if (options_.work_probe) options_.work_probe(stage, meter_.done());
+    progress_.report(fraction, stage);
+  }
+
+  /// A stage running from fraction `begin` to `end`, expected to take `expected_units` of
+  /// work: reported now, and by report_work() after every WorkMeter::kDefaultReportEvery units.
+  void begin_stage(const char* stage, double begin, double end, std::uint64_t expected_units) {
+    stage_ = stage;
+    stage_begin_ = begin;
+    stage_end_ = end;
+    stage_units_start_ = meter_.done();
+    stage_units_expected_ = std::max<std::uint64_t>(expected_units, 1);
+    report(begin, stage);
+  }
+
+  /// The work meter's report: the current stage, its fraction estimated from the work done.
+  void report_work() {
+    const double done = static_cast<double>(meter_.done() - stage_units_start_) / static_cast<double>(stage_units_expected_);
+    report(stage_begin_ + (stage_end_ - stage_begin_) * std::min(0.95, done), stage_);
+  }
+
   const std::vector<Vec3>& points_;
   const Options& options_;
   Progress progress_;
+  WorkMeter meter_;
+  const char* stage_ = "index";
+  double stage_begin_ = 0.0, stage_end_ = 0.0;
+  std::uint64_t stage_units_start_ = 0, stage_units_expected_ = 1;
   int threads_;
-  std::thread::id caller_;
   Result result_;
   std::vector<char> inside_;  // per point: its foot lies inside its leaf (A2)
 };

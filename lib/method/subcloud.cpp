@@ -106,7 +106,7 @@ std::uint8_t membership(const Vec3& p, const std::array<ChildTest, 4>& children)
 
 }  // namespace
 
-std::array<std::vector<std::size_t>, 4> split_subcloud(const std::vector<Vec3>& points, const std::vector<std::size_t>& parent_subcloud, const std::array<const BaseSurface*, 4>& children, double near, double own, int threads) {
+std::array<std::vector<std::size_t>, 4> split_subcloud(const std::vector<Vec3>& points, const std::vector<std::size_t>& parent_subcloud, const std::array<const BaseSurface*, 4>& children, double near, double own, int threads, WorkMeter* meter) {
   if (!(own >= 0.0 && near >= own)) fail(ErrorCode::InvalidArgument, "split_subcloud: need 0 <= own <= near, got own = " + std::to_string(own) + ", near = " + std::to_string(near));
   for (std::size_t k = 0; k < parent_subcloud.size(); ++k) {
     if (parent_subcloud[k] >= points.size()) fail(ErrorCode::OutOfRange, "split_subcloud: parent_subcloud[" + std::to_string(k) + "] = " + std::to_string(parent_subcloud[k]) + " is not below the point count " + std::to_string(points.size()));
@@ -120,7 +120,10 @@ std::array<std::vector<std::size_t>, 4> split_subcloud(const std::vector<Vec3>& 
   // otherwise the nearest boundary point, so its distance is the one A4.3 measures. Each
   // point writes only its own mask.
   std::vector<std::uint8_t> masks(parent_subcloud.size());
-  parallel_for(parent_subcloud.size(), threads, [&](std::size_t k) { masks[k] = membership(points[parent_subcloud[k]], tests); });
+  metered_for(meter, parent_subcloud.size(), threads, [&](std::size_t k) {
+    masks[k] = membership(points[parent_subcloud[k]], tests);
+    count_work(meter);
+  });
 
   std::array<std::vector<std::size_t>, 4> subclouds;
   for (std::size_t k = 0; k < masks.size(); ++k) {

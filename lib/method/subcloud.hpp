@@ -6,15 +6,17 @@
 // `own` x that diagonal (when several children qualify, the nearest; ties go to the first in
 // child order, so the split is deterministic). A point near no child joins the nearest one,
 // so the parent's subcloud is the union of the children's. Each list keeps the order of
-// `parent_subcloud`; the result does not depend on `threads`.
+// `parent_subcloud`; the result does not depend on `threads`. `meter` (may be null) counts a
+// unit per point.
 #pragma once
 #include <array>
 #include <vector>
 
 #include "base_surface.hpp"
+#include "work_meter.hpp"
 
 namespace dbs {
 
-std::array<std::vector<std::size_t>, 4> split_subcloud(const std::vector<Vec3>& points, const std::vector<std::size_t>& parent_subcloud, const std::array<const BaseSurface*, 4>& children, double near, double own, int threads);
+std::array<std::vector<std::size_t>, 4> split_subcloud(const std::vector<Vec3>& points, const std::vector<std::size_t>& parent_subcloud, const std::array<const BaseSurface*, 4>& children, double near, double own, int threads, WorkMeter* meter = nullptr);
 
 }  // namespace dbs

@@ -1,0 +1,119 @@
+#include "work_meter.hpp"
+
+#include <algorithm>
+#include <exception>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+#include "error.hpp"
+#include "parallel.hpp"
+
+namespace dbs {
+
+WorkMeter::WorkMeter(std::uint64_t report_every) : report_every_(std::max<std::uint64_t>(report_every, 1)), caller_(std::this_thread::get_id()) {}
+
+void WorkMeter::add(std::uint64_t units) {
+  if (cancelled()) fail(ErrorCode::Cancelled, "cancelled while working");
+  const std::uint64_t before = done_.fetch_add(units, std::memory_order_relaxed);
+  if ((before + units) / report_every_ == before / report_every_) return;
+  if (std::this_thread::get_id() == caller_) {
+    if (running_) report_if_due();
+    return;
+  }
+  // Taking the lock orders the notification after a waiter's check of the count.
+  std::lock_guard<std::mutex> lock(mutex_);
+  wake_.notify_one();
+}
+
+bool WorkMeter::take_due() {
+  const std::uint64_t reported = reported_.load(std::memory_order_relaxed);
+  if (done() / report_every_ <= reported) return false;
+  reported_.store(reported + 1, std::memory_order_relaxed);
+  return true;
+}
+
+void WorkMeter::report_if_due() {
+  while (take_due())
+    if (report_) report_();
+}
+
+void WorkMeter::run(std::size_t n, int threads, const std::function<void(std::size_t)>& body) {
+  const std::size_t workers = std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), n);
+  // The caller's own add() reports while this loop runs (and only then).
+  struct Running {
+    bool& flag;
+    bool before;
+    ~Running() { flag = before; }
+  } running{running_, running_};
+  running_ = true;
+  auto inline_range = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      body(i);
+      report_if_due();
+    }
+  };
+  if (workers <= 1) {
+    try {
+      inline_range(0, n);
+    } catch (...) {
+      cancel();
+      throw;
+    }
+    return;
+  }
+  std::exception_ptr error;
+  std::size_t finished = 0;
+  std::vector<std::thread> pool;
+  pool.reserve(workers);
+  auto chunk = [&](std::size_t begin, std::size_t end) {
+    std::exception_ptr failure;
+    try {
+      for (std::size_t i = begin; i < end; ++i) body(i);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (failure && !error) error = failure;
+    ++finished;
+    wake_.notify_one();
+  };
+  auto join_all = [&] {
+    for (std::thread& t : pool) t.join();
+  };
+  std::size_t started = 0;
+  for (; started < workers; ++started) {
+    try {
+      pool.emplace_back(chunk, n * started / workers, n * (started + 1) / workers);
+    } catch (const std::system_error&) {
+      break;  // no more threads: the rest runs here
+    }
+  }
+  try {
+    for (std::size_t w = started; w < workers; ++w) inline_range(n * w / workers, n * (w + 1) / workers);
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (finished < pool.size()) {
+      wake_.wait(lock, [&] { return finished == pool.size() || done() / report_every_ > reported_.load(std::memory_order_relaxed); });
+      lock.unlock();
+      report_if_due();
+      lock.lock();
+    }
+    lock.unlock();
+    // One report per multiple, all within this loop: the number of reports does not depend
+    // on the thread count or on when the caller woke up.
+    report_if_due();
+  } catch (...) {
+    cancel();
+    join_all();
+    throw;
+  }
+  join_all();
+  if (error) std::rethrow_exception(error);
+}
+
+void metered_for(WorkMeter* meter, std::size_t n, int threads, const std::function<void(std::size_t)>& body) {
+  if (meter && meter->on_caller_thread()) meter->run(n, threads, body);
+  else parallel_for(n, threads, body);
+}
+
+}  // namespace dbs
