@@ -8,7 +8,11 @@
 // grid of one patch can follow, so the recursive method has to subdivide.
 //
 // usage: dbs-bench [--surface smooth|rippled|both] [--sizes 10k,100k,1M] [--threads N]
-//                  [--max-level N] [--relative-accuracy F]
+//                  [--max-level N] [--relative-accuracy F] [--cancel-trials N]
+//
+// With --cancel-trials N, a second table per surface gives how soon the library answers its
+// progress callback: the longest silence between two calls, and the median and largest time
+// from a cancel (asked at N moments spread evenly over a run) to dbs_parameterize's return.
 //
 // Peak memory is the rise of the process's peak resident set (VmHWM, reset per size through
 // /proc/self/clear_refs where the kernel allows it) over the resident set before the cloud is
@@ -25,6 +29,7 @@
 #include <vector>
 
 #include "bench_arguments.hpp"
+#include "cancel_latency.hpp"
 #include "dbs.h"
 
 namespace {
@@ -99,7 +104,7 @@ void check(int status, const char* what) {
 }
 
 [[noreturn]] void usage_error(const std::string& message) {
-  std::fprintf(stderr, "dbs-bench: %s\nusage: dbs-bench [--surface smooth|rippled|both] [--sizes 10k,100k,1M] [--threads N] [--max-level N] [--relative-accuracy F]\n", message.c_str());
+  std::fprintf(stderr, "dbs-bench: %s\nusage: dbs-bench [--surface smooth|rippled|both] [--sizes 10k,100k,1M] [--threads N] [--max-level N] [--relative-accuracy F] [--cancel-trials N]\n", message.c_str());
   std::exit(2);
 }
 
@@ -123,6 +128,7 @@ struct Settings {
   int threads = 0;
   int max_level = -1;               // -1: the library's default
   double relative_accuracy = -1.0;  // < 0: the library's default
+  int cancel_trials = 0;            // 0: no responsiveness table
 };
 
 Settings parse_arguments(int argc, char** argv) {
@@ -146,6 +152,8 @@ Settings parse_arguments(int argc, char** argv) {
       if (settings.sizes.empty()) usage_error("--sizes needs at least one size");
     } else if (arg == "--threads") {
       settings.threads = parse_int(arg, value);
+    } else if (arg == "--cancel-trials") {
+      settings.cancel_trials = parse_int(arg, value);
     } else if (arg == "--max-level") {
       settings.max_level = parse_int(arg, value);
     } else if (arg == "--relative-accuracy") {
@@ -217,6 +225,19 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
       dbs_result_destroy(result);
       dbs_cloud_destroy(cloud);
+    }
+    if (settings.cancel_trials > 0) {
+      std::printf("\n%s, progress and cancel (%d cancels spread over a run):\n\n", surface->name, settings.cancel_trials);
+      std::printf("| points | longest silence (s) | cancel latency median (s) | cancel latency max (s) |\n|-------:|------:|------:|------:|\n");
+      for (std::size_t count : settings.sizes) {
+        std::vector<double> xyz = height_field(*surface, count, 20240601 + count);
+        dbs_cloud* cloud = nullptr;
+        check(dbs_cloud_create(xyz.data(), count, &cloud), "dbs_cloud_create");
+        const bench::Responsiveness r = bench::measure_responsiveness(cloud, boundary, options, settings.cancel_trials);
+        std::printf("| %zu | %.3f | %.3f | %.3f |\n", count, r.longest_silence, r.median_latency, r.max_latency);
+        std::fflush(stdout);
+        dbs_cloud_destroy(cloud);
+      }
     }
   }
   dbs_boundary_destroy(boundary);

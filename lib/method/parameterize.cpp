@@ -73,12 +73,12 @@ class Driver {
   Result run() {
     const auto start = Clock::now();
     begin_stage("index", 0.0, kIndexEnd, 0);
-    {
-      CloudIndex index(points_);
-      const NoiseEstimate noise = estimate_noise(index, threads_);
-      result_.length_scale = noise.spacing;
-      result_.noise = noise.sigma;
-    }
+    // The root's subcloud is the whole cloud in input order, so this index (the same tree as
+    // one over that subcloud) also serves the root's evolution and subdivision.
+    cloud_index_ = std::make_unique<CloudIndex>(points_);
+    const NoiseEstimate noise = estimate_noise(*cloud_index_, threads_);
+    result_.length_scale = noise.spacing;
+    result_.noise = noise.sigma;
     result_.stage_seconds.index = seconds_since(start);
     if (!(result_.length_scale > 0.0)) fail(ErrorCode::Degenerate, "the cloud's points all coincide (length scale 0)");
     // The noise floor: a surface lying exactly on the true surface scores a mean distance of
@@ -140,8 +140,9 @@ class Driver {
     begin_stage("evolve", begin, begin + 0.8 * (end - begin), expected);
     meter_.run(ids.size(), outer, [&](std::size_t k) {
       Patch& patch = result_.patches[ids[k]];
-      indices[k] = std::make_unique<CloudIndex>(points_, patch.subcloud);
-      projectors[k] = std::make_unique<DirectedProjector>(*indices[k], result_.length_scale);
+      const bool root = patch.parent < 0;
+      if (!root) indices[k] = std::make_unique<CloudIndex>(points_, patch.subcloud);
+      projectors[k] = std::make_unique<DirectedProjector>(root ? *cloud_index_ : *indices[k], result_.length_scale);
       evolve_patch(patch, points_, *projectors[k], settings);
     });
     for (int id : ids) result_.iterations += result_.patches[id].iterations;
@@ -167,8 +168,9 @@ class Driver {
       std::array<std::vector<std::size_t>, 4> parts = split_subcloud(points_, parent.subcloud, surfaces, options_.subcloud_near, options_.subcloud_own, inner, &meter_);
       for (int c = 0; c < 4; ++c) quad[c].subcloud = std::move(parts[c]);
     });
-    indices.clear();
     projectors.clear();
+    indices.clear();
+    cloud_index_.reset();
     result_.stage_seconds.subdivide += seconds_since(subdivide_start);
 
     // The patches that stay leaves parameterize their points now (A2, first part), which also
@@ -405,6 +407,7 @@ class Driver {
   const Options& options_;
   Progress progress_;
   WorkMeter meter_;
+  std::unique_ptr<CloudIndex> cloud_index_;  // the whole cloud's, until the root is split
   const char* stage_ = "index";
   double stage_begin_ = 0.0, stage_end_ = 0.0;
   std::uint64_t stage_units_start_ = 0, stage_units_expected_ = 1;
