@@ -12,10 +12,6 @@ namespace {
 
 /// Grid projections at one grid size while the pleat guard keeps damping some nodes.
 constexpr int kMaxDampedSteps = 4;
-/// Work units of one grid node's projection (a directed projection iterated along its curve
-/// costs about as much as this many point projections), so that progress reports come as
-/// often during grid projections as during measurements.
-constexpr std::uint64_t kNodeWork = 8;
 
 }  // namespace
 
@@ -57,8 +53,7 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
     // few damped steps instead of being pleated over (pleat_guard.hpp).
     for (int step = 0; step < kMaxDampedSteps; ++step) {
       std::size_t damped = 0;
-      Grid projected = project_grid(patch.surface, grid, grid, projector, settings.gamma, &damped);
-      count_work(settings.meter, kNodeWork * static_cast<std::uint64_t>(grid) * grid);
+      Grid projected = project_grid(patch.surface, grid, grid, projector, settings.gamma, &damped, settings.threads, settings.meter);
       patch.surface = BaseSurface(patch.surface.boundary(), projected);
       patch.grid = std::move(projected);
       ++patch.iterations;

@@ -259,23 +259,24 @@ class Driver {
   /// the evolution) and whether it met the target.
   void project_leaf(Patch& leaf) {
     const SurfaceProjector projector(leaf.surface);
-    std::vector<Foot> feet(leaf.subcloud.size());
+    // A point appears once in the subcloud: each body touches only its own point's state.
+    std::vector<double> distance(leaf.subcloud.size());
     meter_.run(leaf.subcloud.size(), threads_, [&](std::size_t k) {
-      feet[k] = projector.project(points_[leaf.subcloud[k]]);
+      const Foot foot = projector.project(points_[leaf.subcloud[k]]);
+      distance[k] = foot.distance;
+      consider(leaf.subcloud[k], leaf, foot);
       meter_.add();
     });
-    // In subcloud order, so that neither the sums nor the choices depend on the thread count.
+    if (distance.empty()) return;
+    // Summed in subcloud order, so that the figures do not depend on the thread count.
     double sum = 0.0, max = 0.0;
-    for (std::size_t k = 0; k < feet.size(); ++k) {
-      sum += feet[k].distance;
-      max = std::max(max, feet[k].distance);
-      consider(leaf.subcloud[k], leaf, feet[k]);
+    for (double d : distance) {
+      sum += d;
+      max = std::max(max, d);
     }
-    if (!feet.empty()) {
-      leaf.mean_distance = sum / static_cast<double>(feet.size());
-      leaf.max_distance = max;
-      leaf.accurate = leaf.mean_distance <= result_.accuracy;
-    }
+    leaf.mean_distance = sum / static_cast<double>(distance.size());
+    leaf.max_distance = max;
+    leaf.accurate = leaf.mean_distance <= result_.accuracy;
   }
 
   /// The second part of A2: points whose best foot is clamped try the leaves across.
@@ -371,12 +372,14 @@ class Driver {
     }
   }
 
-  /// Work units expected to evolve a patch of `points` points (grid nodes and measured
-  /// points over its grid sizes), for the progress fraction only.
+  /// Work units expected to evolve a patch of `points` points (densified section nodes, about
+  /// 2 h apart on sections across the patch, and measured points over its grid sizes), for
+  /// the progress fraction only.
   std::uint64_t evolve_work(std::size_t points) const {
     const std::uint64_t steps = static_cast<std::uint64_t>(std::max(1, options_.max_grid - options_.initial_grid + 1));
     const std::uint64_t measured = std::min<std::uint64_t>(points, 2 * EvolveSettings().error_sample);
-    const std::uint64_t nodes = static_cast<std::uint64_t>(options_.max_grid) * static_cast<std::uint64_t>(options_.max_grid);
+    const std::uint64_t per_section = std::min<std::uint64_t>(512, static_cast<std::uint64_t>(std::sqrt(static_cast<double>(points))) / 2 + 2);
+    const std::uint64_t nodes = 2 * static_cast<std::uint64_t>(options_.max_grid) * per_section;
     return steps * (measured + nodes);
   }
 

@@ -14,13 +14,14 @@ constexpr std::size_t kMaxSectionNodes = 512;
 
 /// A3 on one grid section (row or column): densify, project, read the offsets of the
 /// section's own points. Its two ends lie on the boundary and stay fixed.
-std::vector<double> project_section(const std::vector<Vec3>& points, const std::vector<Vec3>& normals, const DirectedProjector& projector, double gamma) {
+std::vector<double> project_section(const std::vector<Vec3>& points, const std::vector<Vec3>& normals, const DirectedProjector& projector, double gamma, WorkMeter* meter) {
   double length = 0.0;
   for (std::size_t k = 0; k + 1 < points.size(); ++k) length += (points[k + 1] - points[k]).norm();
   const double spacing = std::max(kNodeSpacing * projector.length_scale(), length / static_cast<double>(kMaxSectionNodes));
   std::vector<std::size_t> original;
   const CurveProjectionInput input = densify_polygon(points, normals, spacing, original, kMaxSectionNodes);
   const std::vector<double> node_offsets = project_curve(projector, input, gamma);
+  count_work(meter, input.nodes.size());
   std::vector<double> offsets(points.size());
   for (std::size_t k = 0; k < points.size(); ++k) offsets[k] = node_offsets[original[k]];
   return offsets;
@@ -28,7 +29,7 @@ std::vector<double> project_section(const std::vector<Vec3>& points, const std::
 
 }  // namespace
 
-Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProjector& projector, double gamma, std::size_t* out_damped_nodes) {
+Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProjector& projector, double gamma, std::size_t* out_damped_nodes, int threads, WorkMeter* meter) {
   Grid grid = surface.sample(nu, nv);
   if (out_damped_nodes) *out_damped_nodes = 0;
   if (nu < 3 || nv < 3) return grid;
@@ -38,23 +39,24 @@ Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProj
 
   // Offsets of the interior points along their normals, from their row and their column.
   std::vector<double> row_offset(grid.points.size(), 0.0), column_offset(grid.points.size(), 0.0);
-  std::vector<Vec3> points, directions;
-  for (int j = 1; j + 1 < nv; ++j) {
-    points.assign(grid.points.begin() + static_cast<std::ptrdiff_t>(j) * nu, grid.points.begin() + static_cast<std::ptrdiff_t>(j + 1) * nu);
-    directions.assign(normals.points.begin() + static_cast<std::ptrdiff_t>(j) * nu, normals.points.begin() + static_cast<std::ptrdiff_t>(j + 1) * nu);
-    const std::vector<double> t = project_section(points, directions, projector, gamma);
+  // Each section writes only its own offsets, so the sections run in parallel.
+  metered_for(meter, static_cast<std::size_t>(nv - 2), threads, [&](std::size_t row) {
+    const std::ptrdiff_t j = static_cast<std::ptrdiff_t>(row) + 1;
+    const std::vector<Vec3> points(grid.points.begin() + j * nu, grid.points.begin() + (j + 1) * nu);
+    const std::vector<Vec3> directions(normals.points.begin() + j * nu, normals.points.begin() + (j + 1) * nu);
+    const std::vector<double> t = project_section(points, directions, projector, gamma, meter);
     for (int i = 0; i < nu; ++i) row_offset[static_cast<std::size_t>(j) * nu + i] = t[i];
-  }
-  for (int i = 1; i + 1 < nu; ++i) {
-    points.clear();
-    directions.clear();
+  });
+  metered_for(meter, static_cast<std::size_t>(nu - 2), threads, [&](std::size_t column) {
+    const int i = static_cast<int>(column) + 1;
+    std::vector<Vec3> points, directions;
     for (int j = 0; j < nv; ++j) {
       points.push_back(grid(i, j));
       directions.push_back(normals(i, j));
     }
-    const std::vector<double> t = project_section(points, directions, projector, gamma);
+    const std::vector<double> t = project_section(points, directions, projector, gamma, meter);
     for (int j = 0; j < nv; ++j) column_offset[static_cast<std::size_t>(j) * nu + i] = t[j];
-  }
+  });
 
   std::vector<double> offsets(grid.points.size());
   for (std::size_t k = 0; k < offsets.size(); ++k) offsets[k] = 0.5 * (row_offset[k] + column_offset[k]);

@@ -2,19 +2,22 @@
 // projected onto the cloud with the smooth curve projection (A3); each interior grid point
 // moves along its surface normal by the mean of its row and column offsets. Border points
 // stay on the boundary. Each section is densified to nodes about 2 h apart (at most 512 per
-// section, so a very large patch gets a coarser spacing); sections are projected one after
-// the other (callers run patches in parallel), so the result is deterministic.
+// section, so a very large patch gets a coarser spacing); the sections are projected in
+// parallel, each writing only its own offsets, so the result does not depend on the thread
+// count.
 #pragma once
 #include "base_surface.hpp"
 #include "curve_projection.hpp"
 #include "pleat_guard.hpp"
+#include "work_meter.hpp"
 
 namespace dbs {
 
 /// Samples `surface` on an nu x nv grid, projects it onto the cloud, returns the projected
 /// grid (border points unchanged). `gamma` as in eq. (6). The move is pleat-free
 /// (pleat_guard.hpp): `out_damped_nodes`, when given, receives the number of nodes whose
-/// offset the guard reduced.
-Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProjector& projector, double gamma, std::size_t* out_damped_nodes = nullptr);
+/// offset the guard reduced. Up to `threads` threads; `meter` (may be null) counts a unit per
+/// densified node.
+Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProjector& projector, double gamma, std::size_t* out_damped_nodes = nullptr, int threads = 1, WorkMeter* meter = nullptr);
 
 }  // namespace dbs

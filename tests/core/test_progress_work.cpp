@@ -71,10 +71,10 @@ unsigned long long largest_gap(const Run& run) {
 
 void reports_come_after_bounded_work(void**) {
   // One report per WorkMeter::kDefaultReportEvery units; between two reports at most that
-  // plus the largest single count (an 11 x 11 grid's nodes, 8 units each) with one thread. With two, a
+  // plus the largest single count (a grid section of at most 512 densified nodes) with one thread. With two, a
   // report comes when the waiting caller is scheduled (later on a loaded machine), so only
   // the number and stages of the reports are compared.
-  const unsigned long long every = WorkMeter::kDefaultReportEvery, largest_count = 8 * 121;
+  const unsigned long long every = WorkMeter::kDefaultReportEvery, largest_count = 512;
   const Run one = run_with_probe(1), two = run_with_probe(2);
   assert_true(one.levels >= 3);
   std::printf("reports: %zu (1 thread), %zu (2 threads); units %llu; largest gap %llu / %llu units\n", one.reports.size(), two.reports.size(), one.reports.back().units, largest_gap(one), largest_gap(two));
