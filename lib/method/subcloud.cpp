@@ -80,6 +80,17 @@ std::uint8_t membership(const Vec3& p, const std::array<ChildTest, 4>& children)
   // A4.4: within the "own" limit of some child the point belongs to that child alone. When
   // several children qualify (near a seam) the nearest one owns it, so a point is never
   // given only to a child it lies outside of.
+  // Most points lie well inside one child: when the distance to its nearest sample (an
+  // upper bound of its distance) is within that child's limit and below every other child's
+  // lower bound, no other child can be nearer, and the loop below would give the point to
+  // that child alone: the answer without projecting.
+  const int first = order[0];
+  if (lower[first] <= children[first].own_limit) {
+    const double upper = children[first].projector->sample_distance(p);
+    bool alone = upper <= children[first].own_limit;
+    for (int k = 1; k < 4 && alone; ++k) alone = lower[order[k]] > upper;
+    if (alone) return static_cast<std::uint8_t>(1u << first);
+  }
   int owner = -1;
   for (int i : order) {
     if (lower[i] > children[i].own_limit || (owner >= 0 && lower[i] > d[owner])) continue;

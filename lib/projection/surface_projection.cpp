@@ -199,6 +199,11 @@ SurfaceProjector::SurfaceProjector(const BaseSurface& surface, FootPrecision pre
 
 SurfaceProjector::~SurfaceProjector() = default;
 
+double SurfaceProjector::sample_distance(const Vec3& q) const {
+  if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::sample_distance: the point is not finite");
+  return (impl_->grid[impl_->index.nearest(q)] - q).norm();
+}
+
 Foot SurfaceProjector::project(const Vec3& q) const {
   if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::project: the point is not finite");
   const Impl& m = *impl_;

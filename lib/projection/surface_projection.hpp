@@ -39,6 +39,10 @@ class SurfaceProjector {
   SurfaceProjector& operator=(const SurfaceProjector&) = delete;
 
   Foot project(const Vec3& q) const;
+  /// Distance from q to the nearest surface sample: an upper bound of the distance to the
+  /// surface (and of project(q).distance, the descent starting there), at the cost of one
+  /// k-d tree query.
+  double sample_distance(const Vec3& q) const;
 
  private:
   struct Impl;

@@ -165,7 +165,8 @@ void curved_surface_parameters_are_recovered(void**) {
 }
 
 // FootPrecision::Distance stops the iteration early but the distance, stationary at the
-// foot, is still exact to far below any accuracy target; the parameters agree to ~1e-6. Points
+// foot, is still exact to far below any accuracy target; the parameters agree to ~1e-6. The
+// nearest sample's distance bounds the distance from above. Points
 // well off the curved surface (where Gauss-Newton converges slowest) and beyond its border.
 void distance_precision_gives_the_same_distances(void**) {
   const BaseSurface surface = curved_surface();
@@ -178,6 +179,7 @@ void distance_precision_gives_the_same_distances(void**) {
     const Vec3 q = surface.eval(u, v) + lift(rng) * surface.normal(u, v) + Vec3(unit(rng) - 0.5, unit(rng) - 0.5, 0.0) * 0.2;
     const Foot a = exact.project(q), b = fast.project(q);
     assert_true(a.inside == b.inside);
+    assert_true(exact.sample_distance(q) >= a.distance);  // an upper bound of the distance
     worst_distance = std::max(worst_distance, std::abs(a.distance - b.distance));
     worst_uv = std::max({worst_uv, std::abs(a.u - b.u), std::abs(a.v - b.v)});
   }
