@@ -285,6 +285,9 @@ typedef struct dbs_options dbs_options;
  *  measure in "folds"), "done");
  *  the string is valid only during the call. Called on the thread that called
  *  dbs_parameterize (see "Callbacks" above); must return normally.
+ *  Since 0.4 it is called after every 2048 units of work (a point projected or measured, a
+ *  node of a grid section solved) in every stage but "index" (the k-d tree build), the same
+ *  number of times for any thread count, and a cancel stops every worker at its next unit.
  *  Return 0 to go on, non-zero to cancel (dbs_parameterize returns DBS_ERR_CANCELLED).
  *  \since 0.1 */
 typedef int (*dbs_progress_fn)(double fraction, const char *stage, void *payload);
@@ -470,7 +473,9 @@ DBS_API int dbs_patches_boundary_count(const dbs_patches *patches, size_t i, int
  *  \since 0.1 */
 DBS_API int dbs_patches_boundary_points(const dbs_patches *patches, size_t i, int32_t side, double *out_xyz, size_t capacity);
 /** Points of the patch's subcloud (a count), their mean and max distance to the patch
- *  (cloud units), grid evolutions (a count).
+ *  (cloud units), grid evolutions (a count). Since 0.4 the distances of a leaf are over all
+ *  of its points, those of a patch that was split over the evenly strided sample (4096 to
+ *  8191 of its points, all of them when fewer) that decided its growth and its split.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE. \since 0.1 */
 DBS_API int dbs_patches_stats(const dbs_patches *patches, size_t i, size_t *out_points, double *out_mean, double *out_max, int32_t *out_iterations);
 

@@ -159,17 +159,18 @@ struct Pass {
 
 /// One estimate: the fits around `max_samples` points strided over `cloud`, with k neighbours
 /// from `level` (the cloud itself or a strided sub-cloud of it).
-Pass estimate_pass(const CloudIndex& cloud, const CloudIndex& level, std::size_t k, std::size_t max_samples, int threads) {
+Pass estimate_pass(const CloudIndex& cloud, const CloudIndex& level, std::size_t k, std::size_t max_samples, int threads, WorkMeter* meter) {
   const std::size_t n = cloud.size();
   const std::size_t count = std::min(n, max_samples);
   const std::vector<Vec3>& points = cloud.points();
   std::vector<Sample> samples(count);
-  parallel_for(count, threads, [&](std::size_t s) {
+  metered_for(meter, count, threads, [&](std::size_t s) {
     // Scratch only: each sample's result depends on its own centre alone.
     thread_local std::vector<std::size_t> idx;
     thread_local std::vector<double> d2;
     thread_local std::vector<std::pair<double, std::size_t>> by_tangent;
     samples[s] = fit_sample(level, points[cloud.point_index(s * n / count)], k, idx, d2, by_tangent);
+    count_work(meter);
   });
   std::vector<double> fit_sigma, radius, thickness, residual;
   for (const Sample& s : samples)
@@ -196,7 +197,7 @@ Pass estimate_pass(const CloudIndex& cloud, const CloudIndex& level, std::size_t
 
 }  // namespace
 
-NoiseEstimate estimate_noise(const CloudIndex& index, int threads) {
+NoiseEstimate estimate_noise(const CloudIndex& index, int threads, WorkMeter* meter) {
   NoiseEstimate out;
   const std::size_t n = index.size();
   if (n >= 2) out.spacing = cloud_spacing(index);
@@ -220,7 +221,7 @@ NoiseEstimate estimate_noise(const CloudIndex& index, int threads) {
     bool flat = false, stalled = false;
     for (std::size_t k = kNoiseNeighbours; k <= 2 * kNoiseNeighbours && !flat; k *= 2) {
       if (k + 1 > level->size()) break;
-      const Pass search = estimate_pass(index, *level, k, kNoiseSearchSamples, threads);
+      const Pass search = estimate_pass(index, *level, k, kNoiseSearchSamples, threads, meter);
       if (search.samples == 0) {  // no neighbourhood carries a fit: keep the last step that did
         stalled = true;
         break;
@@ -240,7 +241,7 @@ NoiseEstimate estimate_noise(const CloudIndex& index, int threads) {
     level = current.get();
   }
   if (best_level == nullptr) return out;
-  const Pass pass = estimate_pass(index, *best_level, best_k, kNoiseMaxSamples, threads);
+  const Pass pass = estimate_pass(index, *best_level, best_k, kNoiseMaxSamples, threads, meter);
   if (pass.samples == 0) return out;
   out.sigma = pass.sigma;
   out.samples = pass.samples;

@@ -29,6 +29,7 @@
 #include <cstddef>
 
 #include "cloud_index.hpp"
+#include "work_meter.hpp"
 
 namespace dbs {
 
@@ -74,6 +75,6 @@ struct NoiseEstimate {
 /// The noise estimate of the indexed points. threads as Options::threads (0 = hardware
 /// concurrency). Throws Error(Degenerate) like cloud_spacing() on a cloud of two or more
 /// points that are all the same point.
-NoiseEstimate estimate_noise(const CloudIndex& index, int threads);
+NoiseEstimate estimate_noise(const CloudIndex& index, int threads, WorkMeter* meter = nullptr);
 
 }  // namespace dbs

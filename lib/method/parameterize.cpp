@@ -72,11 +72,11 @@ class Driver {
 
   Result run() {
     const auto start = Clock::now();
-    begin_stage("index", 0.0, kIndexEnd, 0);
+    begin_stage("index", 0.0, kIndexEnd, 20000);  // the noise estimate's fits, about
     // The root's subcloud is the whole cloud in input order, so this index (the same tree as
     // one over that subcloud) also serves the root's evolution and subdivision.
     cloud_index_ = std::make_unique<CloudIndex>(points_);
-    const NoiseEstimate noise = estimate_noise(*cloud_index_, threads_);
+    const NoiseEstimate noise = estimate_noise(*cloud_index_, threads_, &meter_);
     result_.length_scale = noise.spacing;
     result_.noise = noise.sigma;
     result_.stage_seconds.index = seconds_since(start);
