@@ -11,6 +11,14 @@
 
 namespace dbs {
 
+namespace {
+
+/// Blocks per worker in run(): small enough to even out uneven items, large enough that
+/// handing them out costs nothing.
+constexpr std::size_t kBlocksPerWorker = 16;
+
+}  // namespace
+
 WorkMeter::WorkMeter(std::uint64_t report_every) : report_every_(std::max<std::uint64_t>(report_every, 1)), caller_(std::this_thread::get_id()) {}
 
 void WorkMeter::add(std::uint64_t units) {
@@ -66,12 +74,22 @@ void WorkMeter::run(std::size_t n, int threads, const std::function<void(std::si
   std::size_t finished = 0;
   std::vector<std::thread> pool;
   pool.reserve(workers);
-  auto chunk = [&](std::size_t begin, std::size_t end) {
+  // Blocks handed out in order to whichever worker is free (a patch or a point may take much
+  // longer than another); each index still runs once and writes only its own outputs, so the
+  // result does not depend on which thread ran it.
+  const std::size_t block = std::max<std::size_t>(1, n / (workers * kBlocksPerWorker));
+  std::atomic<std::size_t> next{0};
+  auto drain = [&] {
+    for (std::size_t begin; (begin = next.fetch_add(block)) < n;)
+      for (std::size_t i = begin; i < std::min(n, begin + block); ++i) body(i);
+  };
+  auto worker = [&] {
     std::exception_ptr failure;
     try {
-      for (std::size_t i = begin; i < end; ++i) body(i);
+      drain();
     } catch (...) {
       failure = std::current_exception();
+      next.store(n);  // the others stop at their next block
     }
     std::lock_guard<std::mutex> lock(mutex_);
     if (failure && !error) error = failure;
@@ -81,16 +99,15 @@ void WorkMeter::run(std::size_t n, int threads, const std::function<void(std::si
   auto join_all = [&] {
     for (std::thread& t : pool) t.join();
   };
-  std::size_t started = 0;
-  for (; started < workers; ++started) {
+  for (std::size_t w = 0; w < workers; ++w) {
     try {
-      pool.emplace_back(chunk, n * started / workers, n * (started + 1) / workers);
+      pool.emplace_back(worker);
     } catch (const std::system_error&) {
-      break;  // no more threads: the rest runs here
+      break;  // no more threads: those that started take all blocks
     }
   }
   try {
-    for (std::size_t w = started; w < workers; ++w) inline_range(n * w / workers, n * (w + 1) / workers);
+    if (pool.empty()) inline_range(0, n);
     std::unique_lock<std::mutex> lock(mutex_);
     while (finished < pool.size()) {
       wake_.wait(lock, [&] { return finished == pool.size() || done() / report_every_ > reported_.load(std::memory_order_relaxed); });

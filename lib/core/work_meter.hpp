@@ -7,8 +7,9 @@
 // which wakes it after every `report_every` units to call the meter's report function;
 // where the caller does the work itself (one thread), its own add() calls it. When `report` throws (the host
 // cancelled), the meter is cancelled: each worker's next add() throws Error(Cancelled), the
-// loop is joined and the caller's exception goes on. The chunks of run() are those of
-// parallel_for, so a loop gives the same results either way.
+// loop is joined and the caller's exception goes on. run() hands out blocks of indices to
+// whichever worker is free; as with parallel_for, each index runs once and must write only its
+// own outputs, so a loop gives the same results either way.
 #pragma once
 #include <atomic>
 #include <condition_variable>
@@ -42,7 +43,7 @@ class WorkMeter {
   bool cancelled() const { return cancelled_.load(std::memory_order_relaxed); }
   bool on_caller_thread() const { return std::this_thread::get_id() == caller_; }
 
-  /// body(i) for i in [0, n) on up to `threads` threads (parallel_for's chunks), reporting
+  /// body(i) for i in [0, n) on up to `threads` threads (blocks to whichever is free), reporting
   /// on the caller's thread after every report_every units the bodies add. With one thread
   /// (or one item) the bodies run on the caller's thread, and a body may run a loop of its
   /// own through the meter. Called on the caller's thread only (see metered_for).
