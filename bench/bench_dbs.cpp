@@ -3,12 +3,16 @@
 // wall time of dbs_parameterize and of each of its stages, peak memory, iterations, levels,
 // patches, leaves, mean distance.
 //
-// Two surfaces: "smooth", z = 0.2 sin(pi x) sin(pi y), which one base surface fits, and
+// Three surfaces: "smooth", z = 0.2 sin(pi x) sin(pi y), which one base surface fits,
 // "rippled", the same plus 0.01 sin(16 pi x) sin(16 pi y), whose ripples are finer than the largest
-// grid of one patch can follow, so the recursive method has to subdivide.
+// grid of one patch can follow, so the recursive method has to subdivide, and "outliers", the
+// smooth surface with every 50th point (2%) moved 0.1 (10% of the size) up or down, a scan's gross
+// outliers. "clean mean" is the mean distance of the other points (of all points on the first two).
+// --solver and --loss choose the curve-projection solver (DBS_OPT_SOLVER, DBS_OPT_LOSS).
 //
-// usage: dbs-bench [--surface smooth|rippled|both] [--sizes 10k,100k,1M] [--threads N]
-//                  [--max-level N] [--relative-accuracy F] [--cancel-trials N]
+// usage: dbs-bench [--surface smooth|rippled|outliers|both|all] [--sizes 10k,100k,1M] [--threads N]
+//                  [--max-level N] [--relative-accuracy F] [--solver linear|ceres]
+//                  [--loss none|huber|cauchy|soft_l1] [--cancel-trials N]
 //
 // With --cancel-trials N, a second table per surface gives how soon the library answers its
 // progress callback: the longest silence between two calls, and the median and largest time
@@ -56,11 +60,15 @@ struct Surface {
   const char* name;
   const char* formula;
   double ripple;  // amplitude of the 0.01-scale ripples; 0 = smooth
+  int outlier_every;  // every n-th point moved 0.1 off the surface; 0 = none
 };
 
+bool is_outlier(const Surface& surface, std::size_t i) { return surface.outlier_every > 0 && i % static_cast<std::size_t>(surface.outlier_every) == 0; }
+
 constexpr Surface kSurfaces[] = {
-    {"smooth", "z = 0.2 sin(pi x) sin(pi y)", 0.0},
-    {"rippled", "z = 0.2 sin(pi x) sin(pi y) + 0.01 sin(16 pi x) sin(16 pi y)", 0.01},
+    {"smooth", "z = 0.2 sin(pi x) sin(pi y)", 0.0, 0},
+    {"rippled", "z = 0.2 sin(pi x) sin(pi y) + 0.01 sin(16 pi x) sin(16 pi y)", 0.01, 0},
+    {"outliers", "z = 0.2 sin(pi x) sin(pi y), 2% of the points moved +-0.1 along z", 0.0, 50},
 };
 
 std::vector<double> height_field(const Surface& surface, std::size_t count, std::uint64_t seed) {
@@ -71,6 +79,7 @@ std::vector<double> height_field(const Surface& surface, std::size_t count, std:
     xyz[3 * i] = x;
     xyz[3 * i + 1] = y;
     xyz[3 * i + 2] = 0.2 * std::sin(kPi * x) * std::sin(kPi * y) + surface.ripple * std::sin(16 * kPi * x) * std::sin(16 * kPi * y);
+    if (is_outlier(surface, i)) xyz[3 * i + 2] += (i / static_cast<std::size_t>(surface.outlier_every)) % 2 ? 0.1 : -0.1;
   }
   return xyz;
 }
@@ -104,7 +113,7 @@ void check(int status, const char* what) {
 }
 
 [[noreturn]] void usage_error(const std::string& message) {
-  std::fprintf(stderr, "dbs-bench: %s\nusage: dbs-bench [--surface smooth|rippled|both] [--sizes 10k,100k,1M] [--threads N] [--max-level N] [--relative-accuracy F] [--cancel-trials N]\n", message.c_str());
+  std::fprintf(stderr, "dbs-bench: %s\nusage: dbs-bench [--surface smooth|rippled|outliers|both|all] [--sizes 10k,100k,1M] [--threads N] [--max-level N] [--relative-accuracy F] [--solver linear|ceres] [--loss none|huber|cauchy|soft_l1] [--cancel-trials N]\n", message.c_str());
   std::exit(2);
 }
 
@@ -128,7 +137,9 @@ struct Settings {
   int threads = 0;
   int max_level = -1;               // -1: the library's default
   double relative_accuracy = -1.0;  // < 0: the library's default
-  int cancel_trials = 0;            // 0: no responsiveness table
+  int solver = DBS_SOLVER_LINEAR;
+  int loss = DBS_LOSS_NONE;
+  int cancel_trials = 0;  // 0: no responsiveness table
 };
 
 Settings parse_arguments(int argc, char** argv) {
@@ -141,9 +152,9 @@ Settings parse_arguments(int argc, char** argv) {
     if (arg == "--surface") {
       settings.surfaces.clear();
       for (const Surface& surface : kSurfaces) {
-        if (value == surface.name || value == "both") settings.surfaces.push_back(&surface);
+        if (value == surface.name || (value == "both" && surface.outlier_every == 0) || value == "all") settings.surfaces.push_back(&surface);
       }
-      if (settings.surfaces.empty()) usage_error("--surface: '" + value + "' is not smooth, rippled or both");
+      if (settings.surfaces.empty()) usage_error("--surface: '" + value + "' is not smooth, rippled, outliers, both or all");
     } else if (arg == "--sizes") {
       settings.sizes.clear();
       std::stringstream list(value);
@@ -156,6 +167,16 @@ Settings parse_arguments(int argc, char** argv) {
       settings.cancel_trials = parse_int(arg, value);
     } else if (arg == "--max-level") {
       settings.max_level = parse_int(arg, value);
+    } else if (arg == "--solver") {
+      if (value == "linear") settings.solver = DBS_SOLVER_LINEAR;
+      else if (value == "ceres") settings.solver = DBS_SOLVER_CERES;
+      else usage_error("--solver: '" + value + "' is not linear or ceres");
+    } else if (arg == "--loss") {
+      const char* const names[] = {"none", "huber", "cauchy", "soft_l1"};  // DBS_LOSS_* order
+      settings.loss = -1;
+      for (int k = 0; k < 4; ++k)
+        if (value == names[k]) settings.loss = k;
+      if (settings.loss < 0) usage_error("--loss: '" + value + "' is not none, huber, cauchy or soft_l1");
     } else if (arg == "--relative-accuracy") {
       char* end = nullptr;
       settings.relative_accuracy = std::strtod(value.c_str(), &end);
@@ -184,6 +205,8 @@ int main(int argc, char** argv) {
   check(dbs_options_create(&options), "dbs_options_create");
   check(dbs_options_set_int(options, DBS_OPT_THREADS, settings.threads), "dbs_options_set_int(threads)");
   if (settings.max_level >= 0) check(dbs_options_set_int(options, DBS_OPT_MAX_LEVEL, settings.max_level), "dbs_options_set_int(max_level)");
+  check(dbs_options_set_int(options, DBS_OPT_SOLVER, settings.solver), "dbs_options_set_int(solver)");
+  check(dbs_options_set_int(options, DBS_OPT_LOSS, settings.loss), "dbs_options_set_int(loss)");
   if (settings.relative_accuracy > 0.0) check(dbs_options_set_double(options, DBS_OPT_RELATIVE_ACCURACY, settings.relative_accuracy), "dbs_options_set_double(relative_accuracy)");
   int32_t max_level = 0;
   double relative_accuracy = 0.0;
@@ -192,15 +215,16 @@ int main(int argc, char** argv) {
   dbs_boundary* boundary = nullptr;
   check(dbs_boundary_create(bottom, 2, right, 2, top, 2, left, 2, &boundary), "dbs_boundary_create");
 
-  std::printf("libdbs %s, max level %d, relative accuracy %g, threads %s\n", dbs_version_string(), max_level, relative_accuracy,
-              settings.threads == 0 ? "all" : std::to_string(settings.threads).c_str());
+  static const char* const loss_names[] = {"none", "huber", "cauchy", "soft_l1"};
+  std::printf("libdbs %s, max level %d, relative accuracy %g, threads %s, solver %s, loss %s\n", dbs_version_string(), max_level, relative_accuracy,
+              settings.threads == 0 ? "all" : std::to_string(settings.threads).c_str(), settings.solver == DBS_SOLVER_CERES ? "ceres" : "linear", loss_names[settings.loss]);
   std::printf("times in seconds: the whole dbs_parameterize call, then its stages (index: k-d tree, length scale and noise estimate;\n"
               "evolve: base surfaces on all levels; subdivide: middle curves and subclouds; project: every point onto its leaves;\n"
               "folds: the reference-free fold measure); noise: the estimated sigma; folded: its share of folded points\n");
   for (const Surface* surface : settings.surfaces) {
     std::printf("\n%s: %s\n\n", surface->name, surface->formula);
-    std::printf("| points | time | index | evolve | subdivide | project | folds | peak memory (MiB) | iterations | levels | patches | leaves | mean distance | noise | folded | target met |\n");
-    std::printf("|-------:|-----:|------:|-------:|----------:|--------:|------:|------------------:|-----------:|-------:|--------:|-------:|--------------:|------:|-------:|:----------:|\n");
+    std::printf("| points | time | index | evolve | subdivide | project | folds | peak memory (MiB) | iterations | Ceres iterations | levels | patches | leaves | mean distance | clean mean | max distance | noise | folded | target met |\n");
+    std::printf("|-------:|-----:|------:|-------:|----------:|--------:|------:|------------------:|-----------:|-----------------:|-------:|--------:|-------:|--------------:|-----------:|-------------:|------:|-------:|:----------:|\n");
     std::fflush(stdout);
     for (std::size_t count : settings.sizes) {
       std::vector<double> xyz = height_field(*surface, count, 20240601 + count);
@@ -215,12 +239,19 @@ int main(int argc, char** argv) {
       double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       long peak = status_kib("VmHWM");
 
+      std::vector<double> distance(count);
+      check(dbs_result_distances(result, distance.data(), count), "dbs_result_distances");
+      double clean_sum = 0.0;
+      std::size_t clean = 0;
+      for (std::size_t i = 0; i < count; ++i)
+        if (!is_outlier(*surface, i)) clean_sum += distance[i], ++clean;
       char memory[32] = "n/a";
       if (rss_before >= 0 && peak >= 0) std::snprintf(memory, sizeof memory, "%.1f", static_cast<double>(peak - rss_before) / 1024.0);
-      std::printf("| %zu | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %s | %.0f | %.0f | %.0f | %.0f | %.3g | %.2g | %.2f%% | %s |\n", count, seconds,
+      std::printf("| %zu | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %s | %.0f | %.0f | %.0f | %.0f | %.0f | %.3g | %.3g | %.3g | %.2g | %.2f%% | %s |\n", count, seconds,
                   stat(result, DBS_STAT_SECONDS_INDEX), stat(result, DBS_STAT_SECONDS_EVOLVE), stat(result, DBS_STAT_SECONDS_SUBDIVIDE),
                   stat(result, DBS_STAT_SECONDS_PARAMETERIZE), stat(result, DBS_STAT_SECONDS_FOLDS), memory, stat(result, DBS_STAT_ITERATIONS),
-                  stat(result, DBS_STAT_LEVELS), stat(result, DBS_STAT_PATCHES), stat(result, DBS_STAT_LEAVES), stat(result, DBS_STAT_MEAN_DISTANCE),
+                  stat(result, DBS_STAT_CERES_ITERATIONS), stat(result, DBS_STAT_LEVELS), stat(result, DBS_STAT_PATCHES), stat(result, DBS_STAT_LEAVES),
+                  stat(result, DBS_STAT_MEAN_DISTANCE), clean > 0 ? clean_sum / static_cast<double>(clean) : 0.0, stat(result, DBS_STAT_MAX_DISTANCE),
                   stat(result, DBS_STAT_NOISE), 100.0 * stat(result, DBS_STAT_FOLDED_SHARE), stat(result, DBS_STAT_ACCURACY_MET) != 0.0 ? "yes" : "no");
       std::fflush(stdout);
       dbs_result_destroy(result);

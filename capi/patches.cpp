@@ -110,3 +110,13 @@ int dbs_patches_stats(const dbs_patches* patches, size_t i, size_t* out_points, 
     *out_iterations = patch.iterations;
   });
 }
+
+int dbs_patches_solver(const dbs_patches* patches, size_t i, int32_t* out_solver, size_t* out_ceres_iterations) {
+  return guarded(__func__, [&] {
+    require_non_null(out_solver, "out_solver");
+    require_non_null(out_ceres_iterations, "out_ceres_iterations");
+    const dbs::Patch& patch = patch_at(patches, i);
+    *out_solver = patch.solver;
+    *out_ceres_iterations = patch.ceres_iterations;
+  });
+}

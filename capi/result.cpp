@@ -49,9 +49,12 @@ double stat_value(const dbs::Result& r, int32_t stat) {
     case DBS_STAT_COINCIDENT_POINTS: return static_cast<double>(r.coincident_points);
     case DBS_STAT_JUDGED_POINTS: return static_cast<double>(r.judged_points);
     case DBS_STAT_REPAIRED_POINTS: return static_cast<double>(r.repaired_points);
+    case DBS_STAT_SOLVER: return r.solver;
+    case DBS_STAT_CERES_ITERATIONS: return static_cast<double>(r.ceres_iterations);
+    case DBS_STAT_LOSS_SCALE: return r.loss_scale;
     default: break;
   }
-  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_REPAIRED_POINTS + 1) + ")");
+  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_LOSS_SCALE + 1) + ")");
 }
 
 }  // namespace

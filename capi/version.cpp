@@ -1,4 +1,5 @@
 // Version and feature queries, status names and the last-error message.
+#include "curve_refinement.hpp"
 #include "draco_io.hpp"
 #include "firewall.hpp"
 
@@ -27,13 +28,16 @@ const char* dbs_version_string(void) {
 int dbs_has_feature(int32_t feature, int32_t* out) {
   return dbs::capi::guarded(__func__, [&] {
     dbs::capi::require_non_null(out, "out");
-    dbs::capi::require_index("feature", feature, 3);
+    dbs::capi::require_index("feature", feature, 4);
     switch (feature) {
       case DBS_FEATURE_DRACO:
         *out = dbs::draco_available() ? 1 : 0;
         break;
       case DBS_FEATURE_VALIDATION:
         *out = kBuiltValidation;
+        break;
+      case DBS_FEATURE_CERES:
+        *out = dbs::ceres_available() ? 1 : 0;
         break;
       default:  // DBS_FEATURE_REPORT
         *out = kBuiltReport;

@@ -32,7 +32,13 @@ static const char *const usage_text =
     "  --initial-grid N           grid points per side of a new patch [5]\n"
     "  --max-grid N               largest grid before subdividing [11]\n"
     "  --smoothing G              smoothing weight gamma of the curve projection [0.5]\n"
-    "  --solver linear|ceres      curve-projection solver [linear]\n"
+    "  --solver linear|ceres      curve-projection solver [linear]; ceres needs a libdbs\n"
+    "                             built with Ceres\n"
+    "  --loss none|huber|cauchy|soft_l1\n"
+    "                             robust loss of the ceres solver [none]\n"
+    "  --loss-scale S             scale of the loss in cloud units, 0 = derived [0]\n"
+    "  --ceres-iterations N       Ceres iterations per solve [25]\n"
+    "  --ceres-tolerance F        Ceres function tolerance [1e-6]\n"
     "  --threads N                worker threads, 0 = all hardware threads [0]\n"
     "  --near F                   subcloud 'near' limit, fraction of a patch diagonal [0.25]\n"
     "  --own F                    subcloud 'own' limit, fraction of a patch diagonal [0.05]\n"
@@ -106,7 +112,7 @@ static int32_t parse_int(const char *option, const char *text) {
 
 /* ---- command line ----------------------------------------------------------------- */
 
-enum value_kind { VALUE_NONE, VALUE_INT, VALUE_DOUBLE, VALUE_SOLVER };
+enum value_kind { VALUE_NONE, VALUE_INT, VALUE_DOUBLE, VALUE_SOLVER, VALUE_LOSS };
 
 /* One library option as given on the command line. */
 struct option_value {
@@ -132,6 +138,10 @@ static struct option_value library_options[] = {
     {"--own", DBS_OPT_SUBCLOUD_OWN, VALUE_DOUBLE, NULL, 0, 0.0, 0},
     {"--noise-floor", DBS_OPT_NOISE_FLOOR, VALUE_INT, NULL, 0, 0.0, 0},
     {"--repair", DBS_OPT_REPAIR, VALUE_INT, NULL, 0, 0.0, 0},
+    {"--loss", DBS_OPT_LOSS, VALUE_LOSS, NULL, 0, 0.0, 0},
+    {"--loss-scale", DBS_OPT_LOSS_SCALE, VALUE_DOUBLE, NULL, 0, 0.0, 0},
+    {"--ceres-iterations", DBS_OPT_CERES_MAX_ITERATIONS, VALUE_INT, NULL, 0, 0.0, 0},
+    {"--ceres-tolerance", DBS_OPT_CERES_FUNCTION_TOLERANCE, VALUE_DOUBLE, NULL, 0, 0.0, 0},
 };
 #define LIBRARY_OPTION_COUNT (sizeof library_options / sizeof library_options[0])
 
@@ -168,6 +178,19 @@ static void store_option_value(struct option_value *option, const char *text) {
         option->int_value = DBS_SOLVER_CERES;
       } else {
         usage_error("--solver: '%s' is not a solver (linear or ceres)", text);
+      }
+      break;
+    case VALUE_LOSS:
+      if (strcmp(text, "none") == 0) {
+        option->int_value = DBS_LOSS_NONE;
+      } else if (strcmp(text, "huber") == 0) {
+        option->int_value = DBS_LOSS_HUBER;
+      } else if (strcmp(text, "cauchy") == 0) {
+        option->int_value = DBS_LOSS_CAUCHY;
+      } else if (strcmp(text, "soft_l1") == 0) {
+        option->int_value = DBS_LOSS_SOFT_L1;
+      } else {
+        usage_error("--loss: '%s' is not a loss (none, huber, cauchy or soft_l1)", text);
       }
       break;
     case VALUE_NONE:
@@ -367,6 +390,13 @@ static void print_summary(const dbs_result *result, const char *result_path) {
   printf("patches         %.0f (%.0f leaves)\n", stat_of(result, DBS_STAT_PATCHES), stat_of(result, DBS_STAT_LEAVES));
   printf("levels          %.0f\n", stat_of(result, DBS_STAT_LEVELS));
   printf("iterations      %.0f\n", stat_of(result, DBS_STAT_ITERATIONS));
+  if (stat_of(result, DBS_STAT_SOLVER) == DBS_SOLVER_CERES) {
+    printf("solver          ceres (%.0f Ceres iterations", stat_of(result, DBS_STAT_CERES_ITERATIONS));
+    if (stat_of(result, DBS_STAT_LOSS_SCALE) > 0.0) printf(", robust loss of scale %.6g", stat_of(result, DBS_STAT_LOSS_SCALE));
+    printf(")\n");
+  } else {
+    printf("solver          linear\n");
+  }
   printf("mean distance   %.6g\n", stat_of(result, DBS_STAT_MEAN_DISTANCE));
   printf("max distance    %.6g\n", stat_of(result, DBS_STAT_MAX_DISTANCE));
   const double used = stat_of(result, DBS_STAT_ACCURACY), requested = stat_of(result, DBS_STAT_REQUESTED_ACCURACY);

@@ -155,6 +155,7 @@ DBS_API const char *dbs_version_string(void);
 #define DBS_FEATURE_DRACO 0      /* Draco: clouds from .ply, .obj, .drc (dbs_cloud_load) and results to .drc (dbs_result_save) */
 #define DBS_FEATURE_VALIDATION 1 /* \since 0.2: dbs_mesh_*, dbs_distortion_*, dbs_distances_* (Qhull) */
 #define DBS_FEATURE_REPORT 2     /* \since 0.2: dbs_report_write and the textured .obj of dbs_mesh_save (libpng) */
+#define DBS_FEATURE_CERES 3      /* \since 0.4: the Ceres solver, DBS_SOLVER_CERES (Ceres) */
 /** Sets *out to 1 when the loaded library was built with `feature` (DBS_FEATURE_*), else 0;
  *  DBS_ERR_OUT_OF_RANGE for an id not listed. Without a feature, the calls that need it
  *  fail with DBS_ERR_UNSUPPORTED.
@@ -274,10 +275,20 @@ typedef struct dbs_options dbs_options;
 #define DBS_OPT_SUBCLOUD_OWN 9      /* double; 0.05; [0, 10], <= near. A4.4 "own" limit, fraction of the child's diagonal. */
 #define DBS_OPT_REPAIR 11           /* int; 0; [0, 1]. \since 0.3. 1: the last-resort repair: a point farther from the surface than 10x the target used and one spacing h (one the base surfaces never reached: under an overhang, up a steep wall) takes the inverse-distance mean of its 12 nearest neighbours' (u,v), then steps towards its foot; its distance, patch and level are then those of the surface at its new (u,v), and dbs_result_repaired flags it. Fewer folds where the surfaces miss the cloud, a larger mean distance: off by default. */
 #define DBS_OPT_NOISE_FLOOR 10      /* int; 1; [0, 1]. \since 0.3. 1: the accuracy target used is the larger of the requested one and the noise floor, 1.25 sigma sqrt(2/pi) for the cloud's estimated noise sigma (the mean distance a surface on the true surface scores), so a noisy cloud is not chased to the last level; 0: the requested target as given. */
+#define DBS_OPT_LOSS 12             /* int; DBS_LOSS_NONE; [0, 3]. \since 0.4. Robust loss of the Ceres solver (DBS_LOSS_*; no effect with the linear one): each point's weight in a node's mean is scaled by rho'(d^2) of its offset d along the node's line, so gross outliers of a scan pull the surface less, and the error that decides whether to grow the grid or subdivide (and whether a leaf met the target) is the mean of sqrt(rho(d^2)) instead of the mean distance d, so outliers do not force subdivision. DBS_STAT_MEAN_DISTANCE stays the plain mean. */
+#define DBS_OPT_LOSS_SCALE 13       /* double; 0 = derived; >= 0. \since 0.4. Scale a of the loss in cloud units (distances below it count fully); 0: 3 sigma of the cloud's estimated noise (DBS_STAT_NOISE), at least the spacing h (DBS_STAT_LENGTH_SCALE), so a scaled cloud gets a scaled loss. The one used is DBS_STAT_LOSS_SCALE. A scale outside [1e-6, 1e6] times h makes dbs_parameterize fail with DBS_ERR_OUT_OF_RANGE. */
+#define DBS_OPT_CERES_MAX_ITERATIONS 14      /* int; 25; [1, 1000]. \since 0.4. Ceres iterations per solve at most (a curve takes one to four solves, twice that with a loss). */
+#define DBS_OPT_CERES_FUNCTION_TOLERANCE 15  /* double; 1e-6; [1e-16, 1]. \since 0.4. Ceres stops when an iteration changes the cost by less than this fraction. */
 
 /* Solvers for DBS_OPT_SOLVER (pinned; \since 0.1). */
 #define DBS_SOLVER_LINEAR 0 /* banded linear least squares (always available) */
-#define DBS_SOLVER_CERES 1  /* Ceres refinement: DBS_ERR_UNSUPPORTED until it is implemented */
+#define DBS_SOLVER_CERES 1  /* since 0.4: the linear solve, then each projected curve (grid row or column, middle curve) refined by Ceres with the weights of eq. (5) taken at the node's current position and an optional robust loss (DBS_OPT_LOSS); needs DBS_FEATURE_CERES (before 0.4, and in a build without Ceres: DBS_ERR_UNSUPPORTED) */
+
+/* Robust losses for DBS_OPT_LOSS (pinned; \since 0.4): rho of a squared distance s, scale a. */
+#define DBS_LOSS_NONE 0    /* rho(s) = s: least squares */
+#define DBS_LOSS_HUBER 1   /* s up to a^2, 2 a sqrt(s) - a^2 beyond */
+#define DBS_LOSS_CAUCHY 2  /* a^2 log(1 + s / a^2) */
+#define DBS_LOSS_SOFT_L1 3 /* 2 a^2 (sqrt(1 + s / a^2) - 1) */
 
 /** Progress: `fraction` rises monotonically in [0,1] and the last call has exactly 1.0;
  *  `stage` names the running stage ("index", "evolve", "subdivide", "parameterize",
@@ -318,12 +329,14 @@ DBS_API void dbs_options_destroy(dbs_options *options);
  *  Modifies `options`: must not race with any other use of them.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (an unknown id or a real
  *  option), DBS_ERR_OUT_OF_RANGE (outside the range, or breaking a cross rule),
- *  DBS_ERR_UNSUPPORTED (DBS_SOLVER_CERES). \since 0.1 */
+ *  DBS_ERR_UNSUPPORTED (DBS_SOLVER_CERES without DBS_FEATURE_CERES). \since 0.1 (since 0.4
+ *  also _LOSS, _CERES_MAX_ITERATIONS) */
 DBS_API int dbs_options_set_int(dbs_options *options, int32_t option, int32_t value);
 /** Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (an unknown id or a real
  *  option). \since 0.1 */
 DBS_API int dbs_options_get_int(const dbs_options *options, int32_t option, int32_t *out);
-/** Real options (DBS_OPT_ACCURACY, _RELATIVE_ACCURACY, _SMOOTHING, _SUBCLOUD_NEAR, _SUBCLOUD_OWN).
+/** Real options (DBS_OPT_ACCURACY, _RELATIVE_ACCURACY, _SMOOTHING, _SUBCLOUD_NEAR, _SUBCLOUD_OWN;
+ *  since 0.4 _LOSS_SCALE, _CERES_FUNCTION_TOLERANCE).
  *  Modifies `options`: must not race with any other use of them.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (an unknown id or an integer
  *  option), DBS_ERR_NON_FINITE, DBS_ERR_OUT_OF_RANGE (outside the range, or breaking a
@@ -400,7 +413,7 @@ DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, do
 #define DBS_STAT_MAX_DISTANCE 1  /* largest point-to-surface distance, cloud units */
 #define DBS_STAT_RMS_DISTANCE 2  /* root mean square of the point-to-surface distances, cloud units */
 #define DBS_STAT_ACCURACY 3      /* the mean-distance target that was used, in cloud units: the requested one, raised to the noise floor when DBS_OPT_NOISE_FLOOR is 1 (since 0.3) */
-#define DBS_STAT_ACCURACY_MET 4  /* 1 when every leaf met the target that was used (DBS_STAT_ACCURACY), else 0 */
+#define DBS_STAT_ACCURACY_MET 4  /* 1 when every leaf met the target that was used (DBS_STAT_ACCURACY), else 0; since 0.4, with a robust loss (DBS_OPT_LOSS) a leaf's error is its mean robust distance */
 #define DBS_STAT_LEVELS 5        /* number of quadtree levels (1 = root only), a count */
 #define DBS_STAT_PATCHES 6       /* number of patches in the quadtree, a count */
 #define DBS_STAT_LEAVES 7        /* number of leaf patches, a count */
@@ -413,7 +426,7 @@ DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, do
 #define DBS_STAT_SECONDS_PARAMETERIZE 14 /* ... projecting every point onto its leaves (A2), seconds */
 #define DBS_STAT_SECONDS_FOLDS 15        /* \since 0.3: ... measuring the folds (DBS_STAT_FOLDED_*), seconds */
 #define DBS_STAT_REQUESTED_ACCURACY 16   /* \since 0.3: the target the options asked for (absolute, or relative times the diagonal), cloud units */
-#define DBS_STAT_REQUESTED_MET 17        /* \since 0.3: 1 when every leaf met the requested target, else 0 */
+#define DBS_STAT_REQUESTED_MET 17        /* \since 0.3: 1 when every leaf met the requested target, else 0 (its error judged as for DBS_STAT_ACCURACY_MET) */
 #define DBS_STAT_NOISE 18                /* \since 0.3: the cloud's estimated noise sigma (deviation along the normal, from local quadric fits), cloud units; 0 on a clean cloud */
 #define DBS_STAT_FOLDED_SHARE 19         /* \since 0.3: share in [0,1] of the decided points whose neighbourhood (k nearest in 3D, consistently oriented tangent frames) is mapped to (u,v) with reversed orientation; needs no mesh and does not trust the base surfaces */
 #define DBS_STAT_FOLDED_POINTS 20        /* \since 0.3: number of such folded points, a count */
@@ -421,6 +434,9 @@ DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, do
 #define DBS_STAT_COINCIDENT_POINTS 22    /* \since 0.3: points sharing one (u,v) with another point, a count */
 #define DBS_STAT_REPAIRED_POINTS 24      /* \since 0.3: points the last-resort repair gave their (u,v) (DBS_OPT_REPAIR), a count */
 #define DBS_STAT_JUDGED_POINTS 23        /* \since 0.3: points the fold measure judged: all of them up to 10,000, beyond that 10,000 evenly spread over the input order (the FOLDED/UNDECIDED/COINCIDENT counts are of these), a count */
+#define DBS_STAT_SOLVER 25                /* \since 0.4: the solver that ran, DBS_SOLVER_* */
+#define DBS_STAT_CERES_ITERATIONS 26      /* \since 0.4: Ceres iterations over all refined grid sections of all patches (0 with the linear solver), a count */
+#define DBS_STAT_LOSS_SCALE 27            /* \since 0.4: the scale of the robust loss used (DBS_OPT_LOSS_SCALE, or the derived one), cloud units; 0 without a loss or with the linear solver */
 /** One summary statistic (DBS_STAT_*) of the result, in the unit given beside its id.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (stat). \since 0.1 */
 DBS_API int dbs_result_stat(const dbs_result *result, int32_t stat, double *out);
@@ -478,6 +494,12 @@ DBS_API int dbs_patches_boundary_points(const dbs_patches *patches, size_t i, in
  *  8191 of its points, all of them when fewer) that decided its growth and its split.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE. \since 0.1 */
 DBS_API int dbs_patches_stats(const dbs_patches *patches, size_t i, size_t *out_points, double *out_mean, double *out_max, int32_t *out_iterations);
+/** The solver that projected the patch's grids (DBS_SOLVER_*: DBS_SOLVER_CERES when the run
+ *  asked for it, also for a patch without points) and the Ceres iterations over its refined
+ *  grid sections (a count; 0 with the linear solver), so a level callback can tell which
+ *  solver ran and what it cost.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE. \since 0.4 */
+DBS_API int dbs_patches_solver(const dbs_patches *patches, size_t i, int32_t *out_solver, size_t *out_ceres_iterations);
 
 /* ---- validation (\since 0.1) ---------------------------------------------------- */
 /* The four judgements of a parameterization of the paper's section 7, as numbers and files:

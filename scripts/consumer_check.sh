@@ -5,9 +5,10 @@
 #   2. tests/consumer built with find_package(dbs) + dbs::dbs, and consumer.c built with
 #      `pkg-config --cflags --libs dbs`; both run;
 #   3. only dbs_* symbols are exported by the installed libdbs.so;
-#   4. the same with a static build (-DDBS_BUILD_SHARED=OFF), pkg-config --static;
+#   4. the same with a static build (-DDBS_BUILD_SHARED=OFF, Ceres required), pkg-config --static;
+#      its dbs.pc names Ceres (Libs.private) and glog (Requires.private);
 #   5. a static minimal build (no Draco, Ceres, validation, report): its dbs.pc's private
-#      libraries name neither Qhull nor libpng (nor Draco), and both consumers build and run.
+#      libraries name neither Qhull nor libpng (nor Draco, Ceres, glog), and both consumers build and run.
 # Build trees go to build-consumer/ (reused by later runs); the prefixes are removed at exit.
 #
 # usage: scripts/consumer_check.sh
@@ -78,7 +79,13 @@ if [ -n "$foreign" ]; then
 fi
 echo "  $(nm -D --defined-only "$library" | grep -c ' dbs_') dbs_* functions, nothing else"
 
-install_libdbs static -DDBS_BUILD_SHARED=OFF
+install_libdbs static -DDBS_BUILD_SHARED=OFF -DDBS_WITH_CERES=ON
+echo "consumer_check: [static] dbs.pc names Ceres and glog for the static link"
+pc_file="$(find "$prefixes/static" -name dbs.pc -print -quit)"
+if ! grep -q -- '^Libs.private:.*-lceres' "$pc_file" || ! grep -q '^Requires.private:.*libglog' "$pc_file"; then
+  echo "consumer_check: $pc_file of a static build with Ceres lacks -lceres or libglog" >&2
+  exit 1
+fi
 consume static --static
 
 minimal=(-DDBS_WITH_DRACO=OFF -DDBS_WITH_CERES=OFF -DDBS_WITH_VALIDATION=OFF -DDBS_WITH_REPORT=OFF)
@@ -87,8 +94,8 @@ echo "consumer_check: [minimal-static] dbs.pc lists only what was built"
 pc_file="$(find "$prefixes/minimal-static" -name dbs.pc -print -quit)"
 private="$(grep '^Libs.private:' "$pc_file")"
 echo "  $private"
-if grep -qE -- '-l(qhull|png|draco)' <<<"$private"; then
-  echo "consumer_check: $pc_file of a build without validation, report and Draco lists their libraries" >&2
+if grep -qE -- '-l(qhull|png|draco|ceres)' <<<"$private" || grep -q 'libglog' "$pc_file"; then
+  echo "consumer_check: $pc_file of a build without validation, report, Draco and Ceres lists their libraries" >&2
   exit 1
 fi
 consume minimal-static --static

@@ -43,8 +43,9 @@ fi
 # The rest of build/ after scripts/setup.sh: the same configuration with the tests and the
 # benchmark, so only those are compiled on top of what the set-up built.
 build_release() {
+  # DBS_WITH_CERES=ON: a missing Ceres fails here instead of leaving the solver out.
   cmake -S "$repo" -B "$repo/build" -DCMAKE_BUILD_TYPE=Release -DDBS_BUILD_EXAMPLES=ON -DDBS_BUILD_TESTS=ON \
-    -DDBS_BUILD_BENCH=ON "${launcher[@]}" &&
+    -DDBS_BUILD_BENCH=ON -DDBS_WITH_CERES=ON "${launcher[@]}" &&
     cmake --build "$repo/build" -j"$jobs"
 }
 

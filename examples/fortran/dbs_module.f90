@@ -15,6 +15,7 @@ module dbs
   integer(c_int32_t), parameter :: DBS_FEATURE_DRACO = 0
   integer(c_int32_t), parameter :: DBS_FEATURE_VALIDATION = 1
   integer(c_int32_t), parameter :: DBS_FEATURE_REPORT = 2
+  integer(c_int32_t), parameter :: DBS_FEATURE_CERES = 3
 
   ! ---- status codes (pinned) ---------------------------------------------------------
   integer(c_int), parameter :: DBS_OK = 0
@@ -34,7 +35,10 @@ module dbs
   integer(c_int32_t), parameter :: DBS_OPT_SUBCLOUD_NEAR = 8, DBS_OPT_SUBCLOUD_OWN = 9
   integer(c_int32_t), parameter :: DBS_OPT_NOISE_FLOOR = 10
   integer(c_int32_t), parameter :: DBS_OPT_REPAIR = 11
+  integer(c_int32_t), parameter :: DBS_OPT_LOSS = 12, DBS_OPT_LOSS_SCALE = 13
+  integer(c_int32_t), parameter :: DBS_OPT_CERES_MAX_ITERATIONS = 14, DBS_OPT_CERES_FUNCTION_TOLERANCE = 15
   integer(c_int32_t), parameter :: DBS_SOLVER_LINEAR = 0, DBS_SOLVER_CERES = 1
+  integer(c_int32_t), parameter :: DBS_LOSS_NONE = 0, DBS_LOSS_HUBER = 1, DBS_LOSS_CAUCHY = 2, DBS_LOSS_SOFT_L1 = 3
 
   ! ---- result statistics ---------------------------------------------------------------
   integer(c_int32_t), parameter :: DBS_STAT_MEAN_DISTANCE = 0, DBS_STAT_MAX_DISTANCE = 1, DBS_STAT_RMS_DISTANCE = 2
@@ -49,6 +53,7 @@ module dbs
   integer(c_int32_t), parameter :: DBS_STAT_UNDECIDED_POINTS = 21, DBS_STAT_COINCIDENT_POINTS = 22
   integer(c_int32_t), parameter :: DBS_STAT_JUDGED_POINTS = 23
   integer(c_int32_t), parameter :: DBS_STAT_REPAIRED_POINTS = 24
+  integer(c_int32_t), parameter :: DBS_STAT_SOLVER = 25, DBS_STAT_CERES_ITERATIONS = 26, DBS_STAT_LOSS_SCALE = 27
 
   ! ---- validation: meshes, distortion, distances ----------------------------------------
   real(c_double), parameter :: DBS_MESH_SUSPICIOUS_FACTOR = 4.0_c_double
@@ -398,6 +403,14 @@ module dbs
       real(c_double), intent(out) :: out_mean, out_max
       integer(c_int32_t), intent(out) :: out_iterations
       integer(c_int) :: dbs_patches_stats
+    end function
+    function dbs_patches_solver(patches, i, out_solver, out_ceres_iterations) bind(C, name="dbs_patches_solver")
+      import :: c_int, c_int32_t, c_size_t, c_ptr
+      type(c_ptr), value :: patches
+      integer(c_size_t), value :: i
+      integer(c_int32_t), intent(out) :: out_solver
+      integer(c_size_t), intent(out) :: out_ceres_iterations
+      integer(c_int) :: dbs_patches_solver
     end function
 
     ! ---- validation ----------------------------------------------------------------------

@@ -61,14 +61,25 @@ OPT_SUBCLOUD_NEAR = 8
 OPT_SUBCLOUD_OWN = 9
 OPT_NOISE_FLOOR = 10
 OPT_REPAIR = 11
-INT_OPTIONS = (OPT_MAX_LEVEL, OPT_INITIAL_GRID, OPT_MAX_GRID, OPT_SOLVER, OPT_THREADS)
+OPT_LOSS = 12
+OPT_LOSS_SCALE = 13
+OPT_CERES_MAX_ITERATIONS = 14
+OPT_CERES_FUNCTION_TOLERANCE = 15
+INT_OPTIONS = (OPT_MAX_LEVEL, OPT_INITIAL_GRID, OPT_MAX_GRID, OPT_SOLVER, OPT_THREADS, OPT_NOISE_FLOOR, OPT_REPAIR,
+               OPT_LOSS, OPT_CERES_MAX_ITERATIONS)
 
 FEATURE_DRACO = 0
 FEATURE_VALIDATION = 1
 FEATURE_REPORT = 2
+FEATURE_CERES = 3
 
 SOLVER_LINEAR = 0
 SOLVER_CERES = 1
+
+LOSS_NONE = 0
+LOSS_HUBER = 1
+LOSS_CAUCHY = 2
+LOSS_SOFT_L1 = 3
 
 STAT_MEAN_DISTANCE = 0
 STAT_MAX_DISTANCE = 1
@@ -95,6 +106,9 @@ STAT_UNDECIDED_POINTS = 21
 STAT_COINCIDENT_POINTS = 22
 STAT_JUDGED_POINTS = 23
 STAT_REPAIRED_POINTS = 24
+STAT_SOLVER = 25
+STAT_CERES_ITERATIONS = 26
+STAT_LOSS_SCALE = 27
 
 MESH_SUSPICIOUS_FACTOR = 4.0
 
@@ -198,6 +212,7 @@ PROTOTYPES = {
     "dbs_patches_boundary_count": (_int, [_ptr, _size, _i32, _P(_size)]),
     "dbs_patches_boundary_points": (_int, [_ptr, _size, _i32, _P(_dbl), _size]),
     "dbs_patches_stats": (_int, [_ptr, _size, _P(_size), _P(_dbl), _P(_dbl), _P(_i32)]),
+    "dbs_patches_solver": (_int, [_ptr, _size, _P(_i32), _P(_size)]),
     "dbs_mesh_create": (_int, [_ptr, _ptr, _P(_ptr)]),
     "dbs_mesh_destroy": (None, [_ptr]),
     "dbs_mesh_vertex_count": (_int, [_ptr, _P(_size)]),
@@ -454,6 +469,8 @@ class Patches:
         _check(lib.dbs_patches_grid_size(self._handle, i, ctypes.byref(nu), ctypes.byref(nv)))
         points, mean, worst, iterations = _size(), _dbl(), _dbl(), _i32()
         _check(lib.dbs_patches_stats(self._handle, i, ctypes.byref(points), ctypes.byref(mean), ctypes.byref(worst), ctypes.byref(iterations)))
+        solver, ceres_iterations = _i32(), _size()
+        _check(lib.dbs_patches_solver(self._handle, i, ctypes.byref(solver), ctypes.byref(ceres_iterations)))
         return {
             "id": self._int(lib.dbs_patches_id, i),
             "level": self._int(lib.dbs_patches_level, i),
@@ -465,6 +482,8 @@ class Patches:
             "mean_distance": mean.value,
             "max_distance": worst.value,
             "iterations": iterations.value,
+            "solver": "ceres" if solver.value == SOLVER_CERES else "linear",
+            "ceres_iterations": ceres_iterations.value,
         }
 
     def grid_points(self, i):

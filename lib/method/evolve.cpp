@@ -4,6 +4,7 @@
 
 #include "grid_projection.hpp"
 #include "parallel.hpp"
+#include "robust_loss.hpp"
 #include "surface_projection.hpp"
 
 namespace dbs {
@@ -15,11 +16,13 @@ constexpr int kMaxDampedSteps = 4;
 
 }  // namespace
 
-void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean, double& out_max, WorkMeter* meter) {
+void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean, double& out_max,
+                       LossKind loss, double loss_scale, double* out_loss_mean, WorkMeter* meter) {
   stride = std::max<std::size_t>(stride, 1);
   const std::size_t count = (indices.size() + stride - 1) / stride;
   out_mean = 0.0;
   out_max = 0.0;
+  if (out_loss_mean) *out_loss_mean = 0.0;
   if (count == 0) return;
   SurfaceProjector projector(surface, FootPrecision::Distance);
   std::vector<double> distance(count);
@@ -28,47 +31,60 @@ void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& poin
     count_work(meter);
   });
   // Summed serially in index order so the result does not depend on the thread count.
-  double sum = 0.0;
+  double sum = 0.0, loss_sum = 0.0;
   for (double d : distance) {
     sum += d;
+    if (out_loss_mean) loss_sum += robust_distance(loss, loss_scale, d);
     out_max = std::max(out_max, d);
   }
   out_mean = sum / static_cast<double>(count);
+  if (out_loss_mean) *out_loss_mean = loss_sum / static_cast<double>(count);
 }
 
 void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedProjector& projector, const EvolveSettings& settings, const EvolveTick& tick) {
   patch.point_count = patch.subcloud.size();
   patch.iterations = 0;
   patch.damped_nodes = 0;
+  patch.refined_curves = 0;
+  patch.ceres_iterations = 0;
+  patch.solver = settings.refinement.enabled ? 1 : 0;
+  patch.error = 0.0;
   if (patch.subcloud.empty()) {
     patch.mean_distance = patch.max_distance = 0.0;
     patch.accurate = true;
     return;
   }
   const std::size_t stride = std::max<std::size_t>(1, patch.subcloud.size() / std::max<std::size_t>(settings.error_sample, 1));
-  double mean = 0.0, max = 0.0;
+  const bool robust = settings.error_loss != LossKind::None;
+  double mean = 0.0, max = 0.0, loss_mean = 0.0;
+  RefinementCounts counts;
+  double error = 0.0;
   for (int grid = settings.initial_grid;; ++grid) {
     // Where the pleat guard held nodes back, the surface moves on from where it got to, along
     // its new normals, before the grid grows: an overhang or a steep wall is reached in a
     // few damped steps instead of being pleated over (pleat_guard.hpp).
     for (int step = 0; step < kMaxDampedSteps; ++step) {
       std::size_t damped = 0;
-      Grid projected = project_grid(patch.surface, grid, grid, projector, settings.gamma, &damped, settings.threads, settings.meter);
+      Grid projected = project_grid(patch.surface, grid, grid, projector, settings.gamma, &damped, settings.refinement, &counts, settings.threads, settings.meter);
       patch.surface = BaseSurface(patch.surface.boundary(), projected);
       patch.grid = std::move(projected);
       ++patch.iterations;
       patch.damped_nodes += damped;
       if (damped == 0) break;
     }
-    measure_distances(patch.surface, points, patch.subcloud, stride, settings.threads, mean, max, settings.meter);
+    measure_distances(patch.surface, points, patch.subcloud, stride, settings.threads, mean, max, settings.error_loss, settings.error_loss_scale, robust ? &loss_mean : nullptr, settings.meter);
+    error = robust ? loss_mean : mean;
     if (tick) tick(grid);
-    if (mean <= settings.accuracy || grid >= settings.max_grid) break;
+    if (error <= settings.accuracy || grid >= settings.max_grid) break;
   }
   // The sample's figures; a patch that stays a leaf is measured on all its points by the
   // projection of its subcloud (A2), which computes those distances anyway.
   patch.mean_distance = mean;
   patch.max_distance = max;
-  patch.accurate = mean <= settings.accuracy;
+  patch.refined_curves = counts.curves;
+  patch.ceres_iterations = counts.iterations;
+  patch.error = error;
+  patch.accurate = error <= settings.accuracy;
 }
 
 }  // namespace dbs

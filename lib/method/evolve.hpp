@@ -6,6 +6,7 @@
 #include <functional>
 #include <vector>
 
+#include "curve_refinement.hpp"
 #include "directed_projection.hpp"
 #include "patch.hpp"
 #include "work_meter.hpp"
@@ -18,25 +19,36 @@ struct EvolveSettings {
   int max_grid = 11;
   double gamma = 0.5;
   int threads = 1;              // for the distance measurement inside one patch
-  /// The mean distance that decides whether to grow the grid (and whether the patch met the
+  /// The error that decides whether to grow the grid (and whether the patch met the
   /// target) is measured on about this many evenly strided subcloud points (between this
   /// and twice as many; all of them in a smaller subcloud): the standard error of such a
   /// mean is a few percent of it, and measuring costs a small share of a projection step.
   std::size_t error_sample = 4096;
-  /// Counts a unit per grid node projected and per point measured (may be null).
+  /// Counts a unit per densified grid node projected and per point measured (may be null).
   WorkMeter* meter = nullptr;
+  /// The Ceres refinement of the grid projection (off: the linear solve alone).
+  RefinementSettings refinement;
+  /// The error that decides (grow the grid, subdivide, accurate) is the mean of each point's
+  /// robust_distance under this loss and scale (cloud units), so that gross outliers do not
+  /// force subdivision; LossKind::None: the plain mean distance.
+  LossKind error_loss = LossKind::None;
+  double error_loss_scale = 0.0;
 };
 
 /// Called after each grid evolution with the grid size reached; may throw to cancel.
 using EvolveTick = std::function<void(int grid)>;
 
 /// Evolves `patch` (surface, subcloud set) against `projector` (which indexes the subcloud).
-/// Sets surface, grid, iterations, point_count, mean/max distance (of the sample) and accurate.
-/// A patch with no points keeps its surface (nothing to fit) and counts as accurate.
+/// Sets surface, grid, iterations, point_count, mean/max distance (plain distances, of the
+/// sample), the refinement counts and accurate (the error of EvolveSettings::error_loss within
+/// the target). A patch with no points keeps its surface (nothing to fit) and counts as accurate.
 void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedProjector& projector, const EvolveSettings& settings, const EvolveTick& tick = {});
 
 /// Mean and maximum distance of points[indices[k]] (k strided by `stride`) to `surface`;
-/// deterministic for any thread count.
-void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean, double& out_max, WorkMeter* meter = nullptr);
+/// deterministic for any thread count. `out_loss_mean`, when given, receives the mean of
+/// robust_distance(loss, loss_scale, d) over the same points; `meter` (may be null) counts a
+/// unit per point.
+void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean, double& out_max,
+                       LossKind loss = LossKind::None, double loss_scale = 0.0, double* out_loss_mean = nullptr, WorkMeter* meter = nullptr);
 
 }  // namespace dbs

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <string>
 
+#include "curve_refinement.hpp"
 #include "error.hpp"
 
 namespace dbs {
@@ -32,6 +33,10 @@ const OptionSpec kSpecs[] = {
     {{"subcloud_own", false, 0.0, 10.0}, false},
     {{"noise_floor", true, 0.0, 1.0}, false},
     {{"repair", true, 0.0, 1.0}, false},
+    {{"loss", true, 0.0, 3.0}, false},
+    {{"loss_scale", false, 0.0, kUnbounded}, false},
+    {{"ceres_max_iterations", true, 1.0, 1000.0}, false},
+    {{"ceres_function_tolerance", false, 1e-16, 1.0}, false},
 };
 constexpr int kOptionCount = static_cast<int>(sizeof(kSpecs) / sizeof(kSpecs[0]));
 
@@ -69,11 +74,13 @@ double Options::*real_member(OptionId id) {
     case OptionId::Smoothing: return &Options::smoothing;
     case OptionId::SubcloudNear: return &Options::subcloud_near;
     case OptionId::SubcloudOwn: return &Options::subcloud_own;
+    case OptionId::LossScale: return &Options::loss_scale;
+    case OptionId::CeresFunctionTolerance: return &Options::ceres_function_tolerance;
     default: return nullptr;
   }
 }
 
-/// The Options field behind an integer option other than the solver, or nullptr.
+/// The Options field behind an integer option other than the solver and the loss, or nullptr.
 int Options::*integer_member(OptionId id) {
   switch (id) {
     case OptionId::MaxLevel: return &Options::max_level;
@@ -82,6 +89,7 @@ int Options::*integer_member(OptionId id) {
     case OptionId::Threads: return &Options::threads;
     case OptionId::NoiseFloor: return &Options::noise_floor;
     case OptionId::Repair: return &Options::repair;
+    case OptionId::CeresMaxIterations: return &Options::ceres_max_iterations;
     default: return nullptr;
   }
 }
@@ -106,8 +114,12 @@ void set_option(Options& options, int id, double value) {
   auto option = static_cast<OptionId>(id);
   switch (option) {
     case OptionId::Solver:
-      if (static_cast<Solver>(static_cast<int>(value)) == Solver::Ceres) fail(ErrorCode::Unsupported, "the Ceres solver is not available in this version of libdbs");
+      if (static_cast<Solver>(static_cast<int>(value)) == Solver::Ceres && !ceres_available())
+        fail(ErrorCode::Unsupported, "the Ceres solver is not available: this libdbs was built without Ceres");
       options.solver = static_cast<Solver>(static_cast<int>(value));
+      return;
+    case OptionId::Loss:
+      options.loss = static_cast<LossKind>(static_cast<int>(value));
       return;
     case OptionId::InitialGrid: check_order("initial_grid", value, "max_grid", options.max_grid); break;
     case OptionId::MaxGrid: check_order("initial_grid", options.initial_grid, "max_grid", value); break;
@@ -125,6 +137,7 @@ double get_option(const Options& options, int id) {
   spec(id);  // rejects unknown ids
   auto option = static_cast<OptionId>(id);
   if (option == OptionId::Solver) return static_cast<double>(static_cast<int>(options.solver));
+  if (option == OptionId::Loss) return static_cast<double>(static_cast<int>(options.loss));
   if (double Options::*real = real_member(option)) return options.*real;
   return static_cast<double>(options.*integer_member(option));
 }

@@ -3,6 +3,8 @@
 #include <functional>
 #include <vector>
 
+#include "robust_loss.hpp"
+
 namespace dbs {
 
 struct Patch;
@@ -31,6 +33,13 @@ struct Options {
   int noise_floor = 1;
   /// 1: the last-resort repair of points the surfaces never reached (fold_repair.hpp).
   int repair = 0;
+  /// The Ceres refinement (curve_refinement.hpp), used with Solver::Ceres only: the robust
+  /// loss, its scale in cloud units (0 = derived from the cloud: 3 sigma of its estimated
+  /// noise, at least one spacing h), iterations per curve and the function tolerance.
+  LossKind loss = LossKind::None;
+  double loss_scale = 0.0;
+  int ceres_max_iterations = 25;
+  double ceres_function_tolerance = 1e-6;
   ProgressFn progress;
   LevelFn on_level;
   /// For tests: called before each progress report with its stage and the work units
@@ -52,6 +61,10 @@ enum class OptionId {
   SubcloudOwn = 9,
   NoiseFloor = 10,
   Repair = 11,
+  Loss = 12,
+  LossScale = 13,
+  CeresMaxIterations = 14,
+  CeresFunctionTolerance = 15,
 };
 
 struct OptionInfo {
@@ -67,7 +80,7 @@ OptionInfo option_info(int id);
 /// initial_grid <= max_grid and subcloud_own <= subcloud_near); throws Error(OutOfRange)
 /// naming the option, the value and the range, Error(NonFinite) for NaN/Inf,
 /// Error(InvalidArgument) for an unknown id or a real value for an integer option,
-/// Error(Unsupported) for the Ceres solver while it is not available.
+/// Error(Unsupported) for the Ceres solver in a build without Ceres.
 void set_option(Options& options, int id, double value);
 /// Current value of an option as a double.
 double get_option(const Options& options, int id);

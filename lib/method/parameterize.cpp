@@ -5,7 +5,10 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <locale>
 #include <numeric>
+#include <sstream>
+#include <string>
 
 #include "cloud_index.hpp"
 #include "corner_frame.hpp"
@@ -17,6 +20,7 @@
 #include "parallel.hpp"
 #include "progress.hpp"
 #include "subcloud.hpp"
+#include "robust_loss.hpp"
 #include "subdivide.hpp"
 #include "surface_projection.hpp"
 #include "work_meter.hpp"
@@ -34,6 +38,11 @@ constexpr double kFoldsShare = 0.95;
 /// surface on the true surface scores against Gaussian noise sigma.
 constexpr double kNoiseFloorFactor = 1.25;
 constexpr double kPi = 3.14159265358979323846;
+/// The derived scale of the robust loss: this many noise sigmas (a point within it counts
+/// as on the surface), but at least one spacing h (a clean cloud still has a scale).
+constexpr double kLossScaleSigmas = 3.0;
+/// The loss scales accepted, in units of h.
+constexpr double kMinLossScale = 1e-6, kMaxLossScale = 1e6;
 
 /// Most points the fold measure judges (about 0.1 s: the measure takes about 1.2 s per 100k points).
 constexpr std::size_t kFoldJudgedPoints = 10000;
@@ -43,6 +52,14 @@ constexpr std::size_t kFoldJudgedPoints = 10000;
 constexpr std::size_t kMinPointsToSubdivide = 64;
 
 using Clock = std::chrono::steady_clock;
+
+/// A number for a message, whatever the host's locale.
+std::string format_number(double x) {
+  std::ostringstream out;
+  out.imbue(std::locale::classic());
+  out << x;
+  return out.str();
+}
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
@@ -87,6 +104,7 @@ class Driver {
     // to the last level, folds), so it is raised to a safety factor above it.
     const double floor = kNoiseFloorFactor * result_.noise * std::sqrt(2.0 / kPi);
     result_.accuracy = options_.noise_floor ? std::max(result_.requested_accuracy, floor) : result_.requested_accuracy;
+    set_refinement();
     report(kIndexEnd, "index");
 
     start_parameters();
@@ -133,6 +151,11 @@ class Driver {
     settings.initial_grid = options_.initial_grid;
     settings.max_grid = options_.max_grid;
     settings.gamma = options_.smoothing;
+    settings.refinement = refinement_;
+    if (refinement_.enabled && refinement_.loss != LossKind::None) {
+      settings.error_loss = refinement_.loss;
+      settings.error_loss_scale = result_.loss_scale;
+    }
     settings.threads = std::max(1, threads_ / std::max(outer, 1));
     settings.meter = &meter_;
     std::uint64_t expected = 0;
@@ -145,7 +168,12 @@ class Driver {
       projectors[k] = std::make_unique<DirectedProjector>(root ? *cloud_index_ : *indices[k], result_.length_scale);
       evolve_patch(patch, points_, *projectors[k], settings);
     });
-    for (int id : ids) result_.iterations += result_.patches[id].iterations;
+    for (int id : ids) {
+      const Patch& p = result_.patches[id];
+      result_.iterations += p.iterations;
+      result_.refined_curves += p.refined_curves;
+      result_.ceres_iterations += p.ceres_iterations;
+    }
     result_.stage_seconds.evolve += seconds_since(evolve_start);
     const auto subdivide_start = Clock::now();
 
@@ -161,7 +189,7 @@ class Driver {
     meter_.run(split.size(), std::min<int>(threads_, static_cast<int>(split.size())), [&](std::size_t s) {
       const std::size_t k = static_cast<std::size_t>(split[s]);
       const Patch& parent = result_.patches[ids[k]];
-      owned[s] = std::make_unique<std::array<Patch, 4>>(subdivide_patch(parent, *projectors[k], options_.smoothing, options_.initial_grid));
+      owned[s] = std::make_unique<std::array<Patch, 4>>(subdivide_patch(parent, *projectors[k], options_.smoothing, options_.initial_grid, refinement_));
       std::array<Patch, 4>& quad = *owned[s];
       const std::array<const BaseSurface*, 4> surfaces{{&quad[0].surface, &quad[1].surface, &quad[2].surface, &quad[3].surface}};
       const int inner = std::max(1, threads_ / std::max<int>(1, static_cast<int>(split.size())));
@@ -217,6 +245,22 @@ class Driver {
     return next;
   }
 
+  /// The Ceres refinement's settings (Solver::Ceres only), its loss scale in units of h.
+  void set_refinement() {
+    result_.solver = static_cast<int>(options_.solver);
+    if (options_.solver != Solver::Ceres) return;
+    refinement_.enabled = true;
+    refinement_.loss = options_.loss;
+    refinement_.max_iterations = options_.ceres_max_iterations;
+    refinement_.function_tolerance = options_.ceres_function_tolerance;
+    const double scale = options_.loss_scale > 0.0 ? options_.loss_scale : std::max(kLossScaleSigmas * result_.noise, result_.length_scale);
+    refinement_.loss_scale = scale / result_.length_scale;
+    // Far outside the cloud's spacing the loss's squares under- or overflow (NaN errors).
+    if (!(refinement_.loss_scale >= kMinLossScale && refinement_.loss_scale <= kMaxLossScale))
+      fail(ErrorCode::OutOfRange, "the loss scale " + format_number(scale) + " is outside [1e-6, 1e6] times the cloud's spacing h = " + format_number(result_.length_scale));
+    if (options_.loss != LossKind::None) result_.loss_scale = scale;
+  }
+
   /// The fold measure of the result on at most kFoldJudgedPoints points, evenly strided over
   /// the input order (a sparser cloud of the same surface: the measure sizes its
   /// neighbourhoods from the spacing), so that it costs a bounded share of a large run.
@@ -268,15 +312,20 @@ class Driver {
       meter_.add();
     });
     if (distance.empty()) return;
-    // Summed in subcloud order, so that the figures do not depend on the thread count.
-    double sum = 0.0, max = 0.0;
+    // Summed in subcloud order, so that the figures do not depend on the thread count. With a
+    // robust loss the target is judged on the loss's error, as during the evolution.
+    const bool robust = refinement_.enabled && refinement_.loss != LossKind::None;
+    double sum = 0.0, max = 0.0, loss_sum = 0.0;
     for (double d : distance) {
       sum += d;
       max = std::max(max, d);
+      if (robust) loss_sum += robust_distance(refinement_.loss, result_.loss_scale, d);
     }
-    leaf.mean_distance = sum / static_cast<double>(distance.size());
+    const double count = static_cast<double>(distance.size());
+    leaf.mean_distance = sum / count;
     leaf.max_distance = max;
-    leaf.accurate = leaf.mean_distance <= result_.accuracy;
+    leaf.error = robust ? loss_sum / count : leaf.mean_distance;
+    leaf.accurate = leaf.error <= result_.accuracy;
   }
 
   /// The second part of A2: points whose best foot is clamped try the leaves across.
@@ -368,7 +417,8 @@ class Driver {
     for (const Patch& p : result_.patches) {
       if (!p.is_leaf()) continue;
       if (!p.accurate) result_.accuracy_met = false;
-      if (!(p.mean_distance <= result_.requested_accuracy)) result_.requested_accuracy_met = false;
+      // Judged like `accurate`: with a robust loss, on the loss's error.
+      if (!(p.error <= result_.requested_accuracy)) result_.requested_accuracy_met = false;
     }
   }
 
@@ -416,13 +466,14 @@ class Driver {
   std::uint64_t stage_units_start_ = 0, stage_units_expected_ = 1;
   int threads_;
   Result result_;
+  RefinementSettings refinement_;
   std::vector<char> inside_;  // per point: its foot lies inside its leaf (A2)
 };
 
 }  // namespace
 
 Result parameterize(const PointCloud& cloud, const Boundary& boundary, const Options& options) {
-  if (options.solver == Solver::Ceres) fail(ErrorCode::Unsupported, "the Ceres solver is not available in this version of libdbs");
+  if (options.solver == Solver::Ceres && !ceres_available()) fail(ErrorCode::Unsupported, "the Ceres solver is not available: this libdbs was built without Ceres");
   return Driver(cloud, boundary, options).run();
 }
 

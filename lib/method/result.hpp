@@ -31,6 +31,10 @@ struct Result {
   double folded_share = 0.0;  // folded / decided points
   int levels = 0;             // quadtree levels present (1 = root only)
   int iterations = 0;         // grid evolutions over all patches
+  int solver = 0;             // the solver that ran (Solver: 0 linear, 1 Ceres)
+  std::size_t refined_curves = 0;    // grid sections the Ceres solver refined, all patches
+  std::size_t ceres_iterations = 0;  // Ceres iterations over them
+  double loss_scale = 0.0;    // the robust loss's scale used, cloud units; 0 without a loss
   double length_scale = 0.0;  // h
   double seconds = 0.0;
   /// Wall-clock time of each stage (their sum is about `seconds`).

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "curve_projection.hpp"
+#include "curve_refinement.hpp"
 #include "error.hpp"
 
 namespace dbs {
@@ -43,7 +44,7 @@ struct SplitCurve {
 /// projection, its ends fixed at `start` / `end` and its centre (t = 1/2) fixed at `centre`.
 /// The three fixed points are copied bitwise into the result.
 template <class ParamAt>
-SplitCurve project_middle_curve(const BaseSurface& surface, ParamAt at, const Vec3& start, const Vec3& centre, const Vec3& end, const DirectedProjector& projector, double gamma, const char* name) {
+SplitCurve project_middle_curve(const BaseSurface& surface, ParamAt at, const Vec3& start, const Vec3& centre, const Vec3& end, const DirectedProjector& projector, double gamma, const RefinementSettings& refinement, const char* name) {
   const int samples = kMiddleCurveIntervals + 1;
   const int centre_sample = kMiddleCurveIntervals / 2;
   std::vector<Vec3> points(samples), directions(samples);
@@ -73,6 +74,11 @@ SplitCurve project_middle_curve(const BaseSurface& surface, ParamAt at, const Ve
       largest = std::max(largest, std::abs(offsets[k]));
     }
     if (largest <= kSettledOffset * projector.length_scale()) break;
+  }
+  if (refinement.enabled) {
+    // The Ceres refinement from where the linear passes settled.
+    const std::vector<double> offsets = refine_curve(projector, input, gamma, std::vector<double>(input.nodes.size(), 0.0), refinement);
+    for (std::size_t k = 0; k < offsets.size(); ++k) input.nodes[k] += offsets[k] * input.directions[k];
   }
   std::vector<Vec3> nodes = std::move(input.nodes);
   nodes.front() = start;
@@ -144,7 +150,7 @@ Patch make_child(const Patch& parent, Boundary boundary, double u0, double v0, i
 
 }  // namespace
 
-std::array<Patch, 4> subdivide_patch(const Patch& parent, const DirectedProjector& projector, double gamma, int grid) {
+std::array<Patch, 4> subdivide_patch(const Patch& parent, const DirectedProjector& projector, double gamma, int grid, const RefinementSettings& refinement) {
   if (grid < 2) fail(ErrorCode::InvalidArgument, "subdivide_patch: grid must be at least 2, got " + std::to_string(grid));
   const BaseSurface& surface = parent.surface;
   const Boundary& boundary = surface.boundary();
@@ -158,9 +164,9 @@ std::array<Patch, 4> subdivide_patch(const Patch& parent, const DirectedProjecto
   // A1.1: the middle curves, meeting at the projected centre.
   const Vec3 centre = projected_centre(surface, projector);
   const SplitCurve u_half = project_middle_curve(
-      surface, [](double t) { return Vec2(0.5, t); }, bottom.first.back(), centre, top.first.back(), projector, gamma, "u = 1/2");
+      surface, [](double t) { return Vec2(0.5, t); }, bottom.first.back(), centre, top.first.back(), projector, gamma, refinement, "u = 1/2");
   const SplitCurve v_half = project_middle_curve(
-      surface, [](double t) { return Vec2(t, 0.5); }, left.first.back(), centre, right.first.back(), projector, gamma, "v = 1/2");
+      surface, [](double t) { return Vec2(t, 0.5); }, left.first.back(), centre, right.first.back(), projector, gamma, refinement, "v = 1/2");
 
   // A1.3/A1.4: the children, sharing the middle curves' halves as seams.
   const Rect& r = parent.rect;

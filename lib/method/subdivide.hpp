@@ -9,6 +9,7 @@
 #pragma once
 #include <array>
 
+#include "curve_refinement.hpp"
 #include "directed_projection.hpp"
 #include "patch.hpp"
 
@@ -16,7 +17,8 @@ namespace dbs {
 
 /// Children in the order (u-,v-), (u+,v-), (u-,v+), (u+,v+), with level, parent and rect set
 /// (id left for the caller). `projector` indexes the parent's subcloud; `grid` is the
-/// children's initial grid size per side.
-std::array<Patch, 4> subdivide_patch(const Patch& parent, const DirectedProjector& projector, double gamma, int grid);
+/// children's initial grid size per side. With `refinement.enabled` each middle curve's
+/// linear projection is refined with Ceres (curve_refinement.hpp) once it has settled.
+std::array<Patch, 4> subdivide_patch(const Patch& parent, const DirectedProjector& projector, double gamma, int grid, const RefinementSettings& refinement = RefinementSettings());
 
 }  // namespace dbs

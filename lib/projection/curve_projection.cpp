@@ -71,16 +71,14 @@ void check_input(const CurveProjectionInput& input, double gamma) {
     if (!is_finite(input.nodes[i]) || !is_finite(input.directions[i])) fail(ErrorCode::NonFinite, "project_curve: node " + std::to_string(i) + " or its direction is not finite");
 }
 
-/// Mean distance between consecutive nodes in units of h; 1 for a curve collapsed to a
-/// point, which has no spacing to measure.
+}  // namespace
+
 double node_spacing(const std::vector<Vec3>& nodes, double h) {
   double length = 0.0;
   for (std::size_t k = 0; k + 1 < nodes.size(); ++k) length += (nodes[k + 1] - nodes[k]).norm();
   const double s = length / static_cast<double>(nodes.size() - 1) / h;
   return s > 0.0 ? s : 1.0;
 }
-
-}  // namespace
 
 std::vector<double> project_curve(const DirectedProjector& projector, const CurveProjectionInput& input, double gamma) {
   check_input(input, gamma);

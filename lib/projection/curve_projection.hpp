@@ -38,6 +38,10 @@ struct CurveProjectionInput {
 /// the fixed ends prevent unless gamma = 0 leaves a node without data and without smoothing.
 std::vector<double> project_curve(const DirectedProjector& projector, const CurveProjectionInput& input, double gamma);
 
+/// Mean distance between consecutive nodes (K >= 2) in units of h: the spacing s the
+/// smoothing terms are taken per; 1 for a curve collapsed to a point.
+double node_spacing(const std::vector<Vec3>& nodes, double h);
+
 /// A3.1: densify a polygon of m >= 2 points to nodes at a near-constant spacing such that
 /// every original point is a node: a segment of length l gets round(l / spacing) sub-segments
 /// (at least 1, at most max_nodes_per_segment). Directions are interpolated linearly and

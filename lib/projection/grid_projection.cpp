@@ -12,15 +12,15 @@ constexpr double kNodeSpacing = 2.0;
 /// spacing then grows beyond kNodeSpacing h.
 constexpr std::size_t kMaxSectionNodes = 512;
 
-/// A3 on one grid section (row or column): densify, project, read the offsets of the
-/// section's own points. Its two ends lie on the boundary and stay fixed.
-std::vector<double> project_section(const std::vector<Vec3>& points, const std::vector<Vec3>& normals, const DirectedProjector& projector, double gamma, WorkMeter* meter) {
+/// A3 on one grid section (row or column): densify, project (and refine), read the offsets
+/// of the section's own points. Its two ends lie on the boundary and stay fixed.
+std::vector<double> project_section(const std::vector<Vec3>& points, const std::vector<Vec3>& normals, const DirectedProjector& projector, double gamma, const RefinementSettings& refinement, RefinementCounts* counts, WorkMeter* meter) {
   double length = 0.0;
   for (std::size_t k = 0; k + 1 < points.size(); ++k) length += (points[k + 1] - points[k]).norm();
   const double spacing = std::max(kNodeSpacing * projector.length_scale(), length / static_cast<double>(kMaxSectionNodes));
   std::vector<std::size_t> original;
   const CurveProjectionInput input = densify_polygon(points, normals, spacing, original, kMaxSectionNodes);
-  const std::vector<double> node_offsets = project_curve(projector, input, gamma);
+  const std::vector<double> node_offsets = solve_curve(projector, input, gamma, refinement, counts);
   count_work(meter, input.nodes.size());
   std::vector<double> offsets(points.size());
   for (std::size_t k = 0; k < points.size(); ++k) offsets[k] = node_offsets[original[k]];
@@ -29,7 +29,7 @@ std::vector<double> project_section(const std::vector<Vec3>& points, const std::
 
 }  // namespace
 
-Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProjector& projector, double gamma, std::size_t* out_damped_nodes, int threads, WorkMeter* meter) {
+Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProjector& projector, double gamma, std::size_t* out_damped_nodes, const RefinementSettings& refinement, RefinementCounts* counts, int threads, WorkMeter* meter) {
   Grid grid = surface.sample(nu, nv);
   if (out_damped_nodes) *out_damped_nodes = 0;
   if (nu < 3 || nv < 3) return grid;
@@ -39,24 +39,33 @@ Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProj
 
   // Offsets of the interior points along their normals, from their row and their column.
   std::vector<double> row_offset(grid.points.size(), 0.0), column_offset(grid.points.size(), 0.0);
-  // Each section writes only its own offsets, so the sections run in parallel.
-  metered_for(meter, static_cast<std::size_t>(nv - 2), threads, [&](std::size_t row) {
+  // Each section writes only its own offsets and counts, so the sections run in parallel;
+  // the counts are summed in section order.
+  const std::size_t rows = static_cast<std::size_t>(nv - 2), columns = static_cast<std::size_t>(nu - 2);
+  std::vector<RefinementCounts> section_counts(rows + columns);
+  metered_for(meter, rows, threads, [&](std::size_t row) {
     const std::ptrdiff_t j = static_cast<std::ptrdiff_t>(row) + 1;
     const std::vector<Vec3> points(grid.points.begin() + j * nu, grid.points.begin() + (j + 1) * nu);
     const std::vector<Vec3> directions(normals.points.begin() + j * nu, normals.points.begin() + (j + 1) * nu);
-    const std::vector<double> t = project_section(points, directions, projector, gamma, meter);
+    const std::vector<double> t = project_section(points, directions, projector, gamma, refinement, &section_counts[row], meter);
     for (int i = 0; i < nu; ++i) row_offset[static_cast<std::size_t>(j) * nu + i] = t[i];
   });
-  metered_for(meter, static_cast<std::size_t>(nu - 2), threads, [&](std::size_t column) {
+  metered_for(meter, columns, threads, [&](std::size_t column) {
     const int i = static_cast<int>(column) + 1;
     std::vector<Vec3> points, directions;
     for (int j = 0; j < nv; ++j) {
       points.push_back(grid(i, j));
       directions.push_back(normals(i, j));
     }
-    const std::vector<double> t = project_section(points, directions, projector, gamma, meter);
+    const std::vector<double> t = project_section(points, directions, projector, gamma, refinement, &section_counts[rows + column], meter);
     for (int j = 0; j < nv; ++j) column_offset[static_cast<std::size_t>(j) * nu + i] = t[j];
   });
+  if (counts) {
+    for (const RefinementCounts& c : section_counts) {
+      counts->curves += c.curves;
+      counts->iterations += c.iterations;
+    }
+  }
 
   std::vector<double> offsets(grid.points.size());
   for (std::size_t k = 0; k < offsets.size(); ++k) offsets[k] = 0.5 * (row_offset[k] + column_offset[k]);

@@ -8,6 +8,7 @@
 #pragma once
 #include "base_surface.hpp"
 #include "curve_projection.hpp"
+#include "curve_refinement.hpp"
 #include "pleat_guard.hpp"
 #include "work_meter.hpp"
 
@@ -16,8 +17,10 @@ namespace dbs {
 /// Samples `surface` on an nu x nv grid, projects it onto the cloud, returns the projected
 /// grid (border points unchanged). `gamma` as in eq. (6). The move is pleat-free
 /// (pleat_guard.hpp): `out_damped_nodes`, when given, receives the number of nodes whose
-/// offset the guard reduced. Up to `threads` threads; `meter` (may be null) counts a unit per
-/// densified node.
-Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProjector& projector, double gamma, std::size_t* out_damped_nodes = nullptr, int threads = 1, WorkMeter* meter = nullptr);
+/// offset the guard reduced. With `refinement.enabled`, each section's linear solution is
+/// refined with Ceres (curve_refinement.hpp) before the guard; `counts`, when given, is added
+/// to. Up to `threads` threads; `meter` (may be null) counts a unit per densified node.
+Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProjector& projector, double gamma, std::size_t* out_damped_nodes = nullptr,
+                  const RefinementSettings& refinement = RefinementSettings(), RefinementCounts* counts = nullptr, int threads = 1, WorkMeter* meter = nullptr);
 
 }  // namespace dbs

@@ -117,7 +117,7 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   json.begin_object();
   json.integer("points", static_cast<long long>(cloud.size()));
   json.begin_object("options");
-  for (int id = 0; id <= static_cast<int>(OptionId::Repair); ++id) json.number(option_info(id).name, get_option(options, id));
+  for (int id = 0; id <= static_cast<int>(OptionId::CeresFunctionTolerance); ++id) json.number(option_info(id).name, get_option(options, id));
   json.end_object();
   json.begin_object("timings_seconds");
   json.number("parameterize", result.seconds);
@@ -138,6 +138,9 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   json.boolean("requested_accuracy_met", result.requested_accuracy_met);
   json.number("noise", result.noise);
   json.number("length_scale", result.length_scale);
+  json.string("solver", result.solver == static_cast<int>(Solver::Ceres) ? "ceres" : "linear");
+  json.integer("ceres_iterations", static_cast<long long>(result.ceres_iterations));
+  json.number("loss_scale", result.loss_scale);
   json.end_object();
   json.begin_array("patches");
   for (const Patch& p : result.patches) {
@@ -157,6 +160,7 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
     json.number("subcloud_mean_distance", p.mean_distance);
     json.number("subcloud_max_distance", p.max_distance);
     json.integer("iterations", p.iterations);
+    json.integer("ceres_iterations", static_cast<long long>(p.ceres_iterations));
     json.boolean("accurate", p.accurate);
     if (p.is_leaf()) write_distances(json, "parameterized_points", distances.per_patch[p.id]);
     json.end_object();

@@ -23,7 +23,11 @@ struct Patch {
   double max_distance = 0.0;
   int iterations = 0;                  // grid evolutions
   std::size_t damped_nodes = 0;        // grid nodes the pleat guard held back, summed over them
-  bool accurate = false;               // mean_distance <= target
+  std::size_t refined_curves = 0;      // grid sections the Ceres solver refined
+  std::size_t ceres_iterations = 0;    // Ceres iterations over them
+  int solver = 0;                      // the solver of its grid projections (0 linear, 1 Ceres)
+  double error = 0.0;                  // what decided `accurate`: mean_distance, or with a robust loss the mean robust distance
+  bool accurate = false;               // error <= target
 
   explicit Patch(BaseSurface s) : surface(std::move(s)) {}
   bool is_leaf() const { return children[0] < 0; }

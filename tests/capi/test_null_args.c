@@ -182,6 +182,9 @@ static void patches_functions(void **state) {
   assert_null_argument(dbs_patches_stats(p, 0, &count, NULL, &max, &value), "dbs_patches_stats", "out_mean");
   assert_null_argument(dbs_patches_stats(p, 0, &count, &mean, NULL, &value), "dbs_patches_stats", "out_max");
   assert_null_argument(dbs_patches_stats(p, 0, &count, &mean, &max, NULL), "dbs_patches_stats", "out_iterations");
+  assert_null_argument(dbs_patches_solver(NULL, 0, &value, &count), "dbs_patches_solver", "patches");
+  assert_null_argument(dbs_patches_solver(p, 0, NULL, &count), "dbs_patches_solver", "out_solver");
+  assert_null_argument(dbs_patches_solver(p, 0, &value, NULL), "dbs_patches_solver", "out_ceres_iterations");
   assert_true(count == 7 && value == -7 && nu == -7 && nv == -7 && mean == -7 && max == -7);
   for (int c = 0; c < 4; ++c) assert_true(rect[c] == -7);
 }

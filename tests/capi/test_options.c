@@ -30,8 +30,18 @@ static const struct option_row kOptions[] = {
     {DBS_OPT_SUBCLOUD_OWN, "subcloud_own", 0, 0.05, 0.0, 10.0, 1, -1e-9, 10.5},
     {DBS_OPT_NOISE_FLOOR, "noise_floor", 1, 1, 0.0, 1.0, 1, -1, 2},
     {DBS_OPT_REPAIR, "repair", 1, 0, 0.0, 1.0, 1, -1, 2},
+    {DBS_OPT_LOSS, "loss", 1, DBS_LOSS_NONE, 0.0, 3.0, 1, -1, 4},
+    {DBS_OPT_LOSS_SCALE, "loss_scale", 0, 0.0, 0.0, DBL_MAX, 1, -1e-12, NAN},
+    {DBS_OPT_CERES_MAX_ITERATIONS, "ceres_max_iterations", 1, 25, 1, 1000, 1, 0, 1001},
+    {DBS_OPT_CERES_FUNCTION_TOLERANCE, "ceres_function_tolerance", 0, 1e-6, 1e-16, 1.0, 1, 0.5e-16, 1.5},
 };
 #define OPTION_COUNT (sizeof kOptions / sizeof kOptions[0])
+
+static int ceres_built(void) {
+  int32_t built = 0;
+  assert_ok(dbs_has_feature(DBS_FEATURE_CERES, &built));
+  return built;
+}
 
 static dbs_options *new_options(void) {
   dbs_options *options = NULL;
@@ -86,7 +96,7 @@ static void range_ends_are_accepted(void **state) {
   (void)state;
   for (size_t k = 0; k < OPTION_COUNT; ++k) {
     const struct option_row *row = &kOptions[k];
-    if (row->id == DBS_OPT_SOLVER) continue; /* its maximum is the unsupported Ceres solver */
+    if (row->id == DBS_OPT_SOLVER && !ceres_built()) continue; /* its maximum is the unsupported Ceres solver */
     dbs_options *options = new_options();
     make_room(options, row->id, row->max);
     assert_ok(set_value(options, row, row->max));
@@ -164,7 +174,7 @@ static void the_wrong_type_is_rejected(void **state) {
 static void unknown_ids_are_rejected(void **state) {
   (void)state;
   dbs_options *options = new_options();
-  const int32_t unknown[] = {-1, 12, 1000};
+  const int32_t unknown[] = {-1, 16, 1000};
   for (int k = 0; k < 3; ++k) {
     char needle[48];
     snprintf(needle, sizeof needle, "option id %d", (int)unknown[k]);
@@ -181,14 +191,67 @@ static void unknown_ids_are_rejected(void **state) {
   dbs_options_destroy(options);
 }
 
-static void ceres_solver_is_unsupported(void **state) {
+/* The Ceres solver is taken exactly when the build has it (dbs_has_feature agrees with the
+ * build's own definitions); a run with it says so in its statistics. */
+static void ceres_solver_follows_the_feature(void **state) {
   (void)state;
+  int32_t built = -1;
+  assert_ok(dbs_has_feature(DBS_FEATURE_CERES, &built));
+#ifdef DBS_HAVE_CERES
+  assert_int_equal(built, 1);
+#else
+  assert_int_equal(built, 0);
+#endif
   dbs_options *options = new_options();
-  assert_failure(dbs_options_set_int(options, DBS_OPT_SOLVER, DBS_SOLVER_CERES), DBS_ERR_UNSUPPORTED, "dbs_options_set_int", "Ceres solver is not available");
   int32_t solver = -1;
+  if (!built) {
+    assert_failure(dbs_options_set_int(options, DBS_OPT_SOLVER, DBS_SOLVER_CERES), DBS_ERR_UNSUPPORTED, "dbs_options_set_int", "built without Ceres");
+    assert_ok(dbs_options_get_int(options, DBS_OPT_SOLVER, &solver));
+    assert_int_equal(solver, DBS_SOLVER_LINEAR);
+    /* the loss options are still accepted (they act on the Ceres solver only) */
+    assert_ok(dbs_options_set_int(options, DBS_OPT_LOSS, DBS_LOSS_HUBER));
+    dbs_options_destroy(options);
+    return;
+  }
+  assert_ok(dbs_options_set_int(options, DBS_OPT_SOLVER, DBS_SOLVER_CERES));
   assert_ok(dbs_options_get_int(options, DBS_OPT_SOLVER, &solver));
-  assert_int_equal(solver, DBS_SOLVER_LINEAR);
-  assert_ok(dbs_options_set_int(options, DBS_OPT_SOLVER, DBS_SOLVER_LINEAR));
+  assert_int_equal(solver, DBS_SOLVER_CERES);
+  assert_ok(dbs_options_set_int(options, DBS_OPT_LOSS, DBS_LOSS_HUBER));
+  assert_ok(dbs_options_set_int(options, DBS_OPT_MAX_LEVEL, 0));
+  dbs_cloud *cloud = bump_cloud(40, 0.1);
+  dbs_boundary *boundary = square_boundary(20);
+  dbs_result *result = parameterize_or_fail(cloud, boundary, options);
+  double ran = -1, iterations = -1, scale = -1, h = -1;
+  assert_ok(dbs_result_stat(result, DBS_STAT_SOLVER, &ran));
+  assert_ok(dbs_result_stat(result, DBS_STAT_CERES_ITERATIONS, &iterations));
+  assert_ok(dbs_result_stat(result, DBS_STAT_LOSS_SCALE, &scale));
+  assert_ok(dbs_result_stat(result, DBS_STAT_LENGTH_SCALE, &h));
+  assert_true(ran == DBS_SOLVER_CERES);
+  assert_true(iterations >= 1);
+  assert_true(scale >= h && h > 0); /* derived: 3 sigma, at least h */
+  /* the patch view says which solver ran and what it cost: the root holds every iteration */
+  const dbs_patches *patches = NULL;
+  assert_ok(dbs_result_patches(result, &patches));
+  int32_t patch_solver = -1;
+  size_t patch_iterations = 0;
+  assert_ok(dbs_patches_solver(patches, 0, &patch_solver, &patch_iterations));
+  assert_int_equal(patch_solver, DBS_SOLVER_CERES);
+  assert_true((double)patch_iterations == iterations);
+  assert_failure(dbs_patches_solver(patches, 1, &patch_solver, &patch_iterations), DBS_ERR_OUT_OF_RANGE, "dbs_patches_solver", NULL);
+  dbs_result_destroy(result);
+  /* a scale far outside the cloud's spacing is refused by the run, naming it */
+  assert_ok(dbs_options_set_double(options, DBS_OPT_LOSS_SCALE, 1e300));
+  dbs_result *refused = NULL;
+  assert_failure(dbs_parameterize(cloud, boundary, options, &refused), DBS_ERR_OUT_OF_RANGE, "dbs_parameterize", "loss scale");
+  assert_null(refused);
+  /* an explicit scale is the one used */
+  assert_ok(dbs_options_set_double(options, DBS_OPT_LOSS_SCALE, 0.01));
+  result = parameterize_or_fail(cloud, boundary, options);
+  assert_ok(dbs_result_stat(result, DBS_STAT_LOSS_SCALE, &scale));
+  assert_true(scale == 0.01);
+  dbs_result_destroy(result);
+  dbs_cloud_destroy(cloud);
+  dbs_boundary_destroy(boundary);
   dbs_options_destroy(options);
 }
 
@@ -270,7 +333,7 @@ int main(void) {
       cmocka_unit_test(non_finite_reals_are_rejected),
       cmocka_unit_test(the_wrong_type_is_rejected),
       cmocka_unit_test(unknown_ids_are_rejected),
-      cmocka_unit_test(ceres_solver_is_unsupported),
+      cmocka_unit_test(ceres_solver_follows_the_feature),
       cmocka_unit_test(grid_sizes_keep_their_order),
       cmocka_unit_test(subcloud_limits_keep_their_order),
       cmocka_unit_test(clones_are_independent),

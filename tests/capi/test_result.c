@@ -129,9 +129,14 @@ static void statistics(void **state) {
     assert_failure(dbs_result_repaired(f->result, NULL, NPOINTS), DBS_ERR_NULL_ARGUMENT, "dbs_result_repaired", "out");
   }
 
+  /* The default solver is the linear one: no Ceres iterations, no loss. */
+  assert_true(result_stat(f->result, DBS_STAT_SOLVER) == DBS_SOLVER_LINEAR);
+  assert_true(result_stat(f->result, DBS_STAT_CERES_ITERATIONS) == 0);
+  assert_true(result_stat(f->result, DBS_STAT_LOSS_SCALE) == 0);
+
   double value = -7;
-  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 25)");
-  assert_failure(dbs_result_stat(f->result, 25, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 25 ");
+  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 28)");
+  assert_failure(dbs_result_stat(f->result, 28, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 28 ");
   assert_true(value == -7);
 }
 
@@ -258,6 +263,11 @@ static void the_root_patch(void **state) {
   assert_true(mean >= 0 && mean < 1e-9 && max >= mean && max < 1e-9);
   assert_true(iterations >= 1);
   assert_true(iterations == result_stat(f->result, DBS_STAT_ITERATIONS));
+  int32_t solver = -1;
+  size_t ceres_iterations = 1;
+  assert_ok(dbs_patches_solver(all, 0, &solver, &ceres_iterations));
+  assert_int_equal(solver, DBS_SOLVER_LINEAR);
+  assert_int_equal(ceres_iterations, 0);
 }
 
 /* A subdivided result through the C API: the quadtree's links, rectangles and shared sides,

@@ -49,8 +49,14 @@ static void features_are_reported(void **state) {
 #else
   assert_int_equal(out, 0);
 #endif
+  assert_ok(dbs_has_feature(DBS_FEATURE_CERES, &out));
+#ifdef DBS_HAVE_CERES
+  assert_int_equal(out, 1);
+#else
+  assert_int_equal(out, 0);
+#endif
   out = -7;
-  assert_failure(dbs_has_feature(3, &out), DBS_ERR_OUT_OF_RANGE, "dbs_has_feature", "feature 3 is outside its range [0, 3)");
+  assert_failure(dbs_has_feature(4, &out), DBS_ERR_OUT_OF_RANGE, "dbs_has_feature", "feature 4 is outside its range [0, 4)");
   assert_failure(dbs_has_feature(-1, &out), DBS_ERR_OUT_OF_RANGE, "dbs_has_feature", "feature -1 ");
   assert_int_equal(out, -7);
   assert_failure(dbs_has_feature(DBS_FEATURE_DRACO, NULL), DBS_ERR_NULL_ARGUMENT, "dbs_has_feature", "'out'");

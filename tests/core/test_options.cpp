@@ -5,6 +5,7 @@
 #include <string>
 
 #include "error.hpp"
+#include "curve_refinement.hpp"
 #include "options.hpp"
 
 // cmocka last (its fail() macro would hide dbs::fail), with C linkage.
@@ -41,12 +42,12 @@ void names_and_types(void**) {
   }
   std::string message;
   try {
-    dbs::option_info(12);
+    dbs::option_info(16);
   } catch (const dbs::Error& e) {
     assert_int_equal(static_cast<int>(e.code()), static_cast<int>(dbs::ErrorCode::InvalidArgument));
     message = e.what();
   }
-  assert_non_null(std::strstr(message.c_str(), "unknown option id 12"));
+  assert_non_null(std::strstr(message.c_str(), "unknown option id 16"));
 }
 
 void integer_options_take_only_integral_values(void**) {
@@ -85,7 +86,33 @@ void order_of_checks(void**) {
   assert_int_equal(static_cast<int>(set_error(options, max_level, 99.5, message)), static_cast<int>(dbs::ErrorCode::InvalidArgument));
   assert_int_equal(static_cast<int>(set_error(options, max_level, 99, message)), static_cast<int>(dbs::ErrorCode::OutOfRange));
   assert_non_null(std::strstr(message.c_str(), "max_level = 99 is outside its range [0, 8]"));
-  assert_int_equal(static_cast<int>(set_error(options, static_cast<int>(dbs::OptionId::Solver), 1, message)), static_cast<int>(dbs::ErrorCode::Unsupported));
+  // the Ceres solver: taken exactly when this build has it
+  const dbs::ErrorCode ceres = set_error(options, static_cast<int>(dbs::OptionId::Solver), 1, message);
+  assert_int_equal(static_cast<int>(ceres), static_cast<int>(dbs::ceres_available() ? dbs::ErrorCode::Internal : dbs::ErrorCode::Unsupported));
+  assert_true(options.solver == (dbs::ceres_available() ? dbs::Solver::Ceres : dbs::Solver::Linear));
+}
+
+void ceres_options_round_trip(void**) {
+  dbs::Options options;
+  const int loss = static_cast<int>(dbs::OptionId::Loss), scale = static_cast<int>(dbs::OptionId::LossScale);
+  const int iterations = static_cast<int>(dbs::OptionId::CeresMaxIterations), tolerance = static_cast<int>(dbs::OptionId::CeresFunctionTolerance);
+  assert_string_equal(dbs::option_info(loss).name, "loss");
+  assert_true(dbs::option_info(loss).is_integer && dbs::option_info(iterations).is_integer);
+  assert_false(dbs::option_info(scale).is_integer || dbs::option_info(tolerance).is_integer);
+  assert_true(options.loss == dbs::LossKind::None && options.loss_scale == 0.0 && options.ceres_max_iterations == 25 && options.ceres_function_tolerance == 1e-6);
+  dbs::set_option(options, loss, 2);
+  dbs::set_option(options, scale, 0.25);
+  dbs::set_option(options, iterations, 7);
+  dbs::set_option(options, tolerance, 1e-9);
+  assert_true(options.loss == dbs::LossKind::Cauchy && options.loss_scale == 0.25 && options.ceres_max_iterations == 7 && options.ceres_function_tolerance == 1e-9);
+  assert_true(dbs::get_option(options, loss) == 2 && dbs::get_option(options, scale) == 0.25 && dbs::get_option(options, iterations) == 7 && dbs::get_option(options, tolerance) == 1e-9);
+  std::string message;
+  assert_int_equal(static_cast<int>(set_error(options, loss, 4, message)), static_cast<int>(dbs::ErrorCode::OutOfRange));
+  assert_non_null(std::strstr(message.c_str(), "loss = 4 is outside its range [0, 3]"));
+  assert_int_equal(static_cast<int>(set_error(options, iterations, 0, message)), static_cast<int>(dbs::ErrorCode::OutOfRange));
+  assert_int_equal(static_cast<int>(set_error(options, tolerance, 0, message)), static_cast<int>(dbs::ErrorCode::OutOfRange));
+  assert_int_equal(static_cast<int>(set_error(options, scale, -1e-3, message)), static_cast<int>(dbs::ErrorCode::OutOfRange));
+  assert_true(options.loss == dbs::LossKind::Cauchy && options.loss_scale == 0.25 && options.ceres_max_iterations == 7);
 }
 
 }  // namespace
@@ -96,6 +123,7 @@ int main() {
       cmocka_unit_test(integer_options_take_only_integral_values),
       cmocka_unit_test(every_field_round_trips),
       cmocka_unit_test(order_of_checks),
+      cmocka_unit_test(ceres_options_round_trip),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
