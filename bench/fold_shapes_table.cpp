@@ -5,7 +5,7 @@
 //
 // Columns: points; reference triangles; quadtree levels and patches; folded reference
 // triangles (signed (u,v) area negative or below 1e-3 of the median: inverted + collapsed) and
-// their share; the reference-free fold measure of the library (DBS_STAT_FOLDED_POINTS and
+// their share; the reference-free fold measure of the library (DBS_STAT_FOLDED_POINTS and, since 0.4, + DBS_STAT_COLLAPSED_POINTS;
 // _SHARE, "n/a" with a dbs.h or library older than 0.3); mean point-to-surface distance and the
 // target used (DBS_STAT_ACCURACY); the result surface's distance to the truth, mean over the
 // points of dist(S(u_i,v_i), noise-free surface); wall time of dbs_parameterize; then the same
@@ -141,6 +141,14 @@ Run run_dbs(const FoldShape& shape, const dbs_options* options) {
       char text[64];
       std::snprintf(text, sizeof text, "%.0f (%.2f%%)", points, 100.0 * share);
       run.reference_free = text;
+    }
+#endif
+#ifdef DBS_STAT_COLLAPSED_POINTS
+    double collapsed = 0.0;
+    if (dbs_result_stat(result, DBS_STAT_COLLAPSED_POINTS, &collapsed) == DBS_OK) {
+      char text[32];
+      std::snprintf(text, sizeof text, " + %.0f collapsed", collapsed);
+      run.reference_free += text;
     }
 #endif
   }

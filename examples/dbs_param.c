@@ -406,6 +406,7 @@ static void print_summary(const dbs_result *result, const char *result_path) {
     printf("                raised from the requested %.6g (%s) to the noise floor\n", requested, stat_of(result, DBS_STAT_REQUESTED_MET) != 0.0 ? "met" : "not met");
   printf("folds           %.2f %% of %.0f points judged (%.0f folded, %.0f undecided, %.0f sharing a (u,v))\n", 100.0 * stat_of(result, DBS_STAT_FOLDED_SHARE),
          stat_of(result, DBS_STAT_JUDGED_POINTS), stat_of(result, DBS_STAT_FOLDED_POINTS), stat_of(result, DBS_STAT_UNDECIDED_POINTS), stat_of(result, DBS_STAT_COINCIDENT_POINTS));
+  printf("collapsed       %.0f of the undecided points squeezed in (u,v)\n", stat_of(result, DBS_STAT_COLLAPSED_POINTS));
   if (stat_of(result, DBS_STAT_REPAIRED_POINTS) > 0.0) printf("repaired        %.0f points\n", stat_of(result, DBS_STAT_REPAIRED_POINTS));
   printf("time            %.3f s\n", stat_of(result, DBS_STAT_SECONDS));
   printf("result          %s\n", result_path);

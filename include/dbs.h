@@ -437,6 +437,7 @@ DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, do
 #define DBS_STAT_SOLVER 25                /* \since 0.4: the solver that ran, DBS_SOLVER_* */
 #define DBS_STAT_CERES_ITERATIONS 26      /* \since 0.4: Ceres iterations over all refined grid sections of all patches (0 with the linear solver), a count */
 #define DBS_STAT_LOSS_SCALE 27            /* \since 0.4: the scale of the robust loss used (DBS_OPT_LOSS_SCALE, or the derived one), cloud units; 0 without a loss or with the linear solver */
+#define DBS_STAT_COLLAPSED_POINTS 28      /* \since 0.4: of the UNDECIDED points, those whose neighbourhood is squeezed in (u,v) (most neighbours share its (u,v), the local map to (u,v) has rank about one, or its determinant is below 1e-3 of the median): where a surface never reached the cloud, points pile up without turning over, which the FOLDED count cannot see; a count */
 /** One summary statistic (DBS_STAT_*) of the result, in the unit given beside its id.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (stat). \since 0.1 */
 DBS_API int dbs_result_stat(const dbs_result *result, int32_t stat, double *out);

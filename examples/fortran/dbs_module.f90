@@ -54,6 +54,7 @@ module dbs
   integer(c_int32_t), parameter :: DBS_STAT_JUDGED_POINTS = 23
   integer(c_int32_t), parameter :: DBS_STAT_REPAIRED_POINTS = 24
   integer(c_int32_t), parameter :: DBS_STAT_SOLVER = 25, DBS_STAT_CERES_ITERATIONS = 26, DBS_STAT_LOSS_SCALE = 27
+  integer(c_int32_t), parameter :: DBS_STAT_COLLAPSED_POINTS = 28
 
   ! ---- validation: meshes, distortion, distances ----------------------------------------
   real(c_double), parameter :: DBS_MESH_SUSPICIOUS_FACTOR = 4.0_c_double

@@ -31,6 +31,7 @@ struct Local {
   Vec3 normal = Vec3::Zero();  // PCA normal (unoriented); e1 x e2 = normal for the sign below
   bool surface_like = false;   // takes part in the orientation graph
   std::int8_t sign = 0;        // sign(det J) against `normal`; 0 = undecided
+  bool collapsed = false;      // undecided because its neighbourhood is squeezed in (u,v)
   double abs_det = 0.0;        // |det J| when sign != 0
   double stretch = 0.0;        // median |(du,dv)| / |dp| over the neighbours; 0 = unknown
 };
@@ -150,7 +151,10 @@ Local analyse(const std::vector<Vec3>& points, const std::vector<double>& u, con
   if (!(lambda[1] > 0.0) || lambda[0] > kMaxFlatness * lambda[1]) return out;
   out.normal = eig.eigenvectors().col(0);
   out.surface_like = true;
-  if (!(out.stretch > 0.0)) return out;  // collapsed: most neighbours share the point's (u,v)
+  if (!(out.stretch > 0.0)) {  // collapsed: most neighbours share the point's (u,v)
+    out.collapsed = ratios.size() >= 4;
+    return out;
+  }
   const Vec3 e1 = eig.eigenvectors().col(2);
   const Vec3 e2 = out.normal.cross(e1);
 
@@ -191,7 +195,11 @@ Local analyse(const std::vector<Vec3>& points, const std::vector<double>& u, con
   // Standard error of J's entries along the least constrained tangent direction.
   const double sigma_r = std::sqrt(residual / (2.0 * static_cast<double>(kept - 2)));
   const double stderr_j = sigma_r / std::sqrt(a_min);
-  if (s_min <= s_max / kMaxCondition || s_min <= kSignificance * stderr_j) return out;
+  if (s_min <= s_max / kMaxCondition) {  // squeezed onto a line (or a point)
+    out.collapsed = true;
+    return out;
+  }
+  if (s_min <= kSignificance * stderr_j) return out;
   out.sign = det > 0.0 ? 1 : -1;
   out.abs_det = std::abs(det);
   return out;
@@ -384,7 +392,10 @@ FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<dou
     std::nth_element(dets.begin(), dets.begin() + static_cast<std::ptrdiff_t>(dets.size() / 2), dets.end());
     const double floor = kMinDetShare * dets[dets.size() / 2];
     for (Local& l : local)
-      if (l.sign != 0 && l.abs_det < floor) l.sign = 0;
+      if (l.sign != 0 && l.abs_det < floor) {
+        l.sign = 0;
+        l.collapsed = true;
+      }
   }
 
   // 3. Consistent normals, then each component's majority sign is the right one.
@@ -400,8 +411,9 @@ FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<dou
     const int sign = local[i].sign * orientation[i];
     const std::int64_t b = sign == 0 ? 0 : balance[component[i]];
     if (sign == 0 || b == 0) {
-      m.state[i] = kFoldUndecided;
+      m.state[i] = local[i].collapsed ? kFoldCollapsed : kFoldUndecided;
       ++m.undecided;
+      if (local[i].collapsed) ++m.collapsed;
     } else if ((sign > 0) == (b > 0)) {
       m.state[i] = kFoldOk;
     } else {

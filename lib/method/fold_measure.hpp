@@ -63,15 +63,21 @@ constexpr double kCoincident = 1e-12;            ///< (u,v) tolerance of count_c
 }  // namespace fold
 
 /// Per-point verdicts of measure_folds().
-enum : std::int8_t { kFoldOk = 1, kFoldUndecided = 0, kFolded = -1 };
+/// kFoldCollapsed: undecided (never counted as folded) because the point's neighbourhood is
+/// squeezed in (u,v): most neighbours share its (u,v), the local map is of rank about one
+/// (smallest singular value below 1e-3 of the largest) or |det J| is below 1e-3 of the
+/// median; the points a surface never reached pile up like that (collapses, which keep
+/// their orientation and so cannot be told folded).
+enum : std::int8_t { kFoldOk = 1, kFoldUndecided = 0, kFolded = -1, kFoldCollapsed = -2 };
 
 struct FoldMeasure {
   std::size_t points = 0;      ///< number of points judged
   std::size_t folded = 0;      ///< points whose neighbourhood is mapped with reversed orientation
   std::size_t undecided = 0;   ///< points whose orientation could not be decided (not counted as folded)
   std::size_t coincident = 0;  ///< points sharing one (u,v) with another point (see count_coincident)
+  std::size_t collapsed = 0;   ///< undecided points whose neighbourhood is squeezed (kFoldCollapsed), part of `undecided`
   double folded_share = 0.0;   ///< folded / (points - undecided); 0 when no point is decided
-  std::vector<std::int8_t> state;  ///< per point: kFoldOk (+1), kFolded (-1), kFoldUndecided (0)
+  std::vector<std::int8_t> state;  ///< per point: kFoldOk (+1), kFolded (-1), kFoldUndecided (0), kFoldCollapsed (-2)
 };
 
 /// Judges the parameterization (u[i], v[i]) of points[i]. noise_sigma >= 0 is the cloud's noise

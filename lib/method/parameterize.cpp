@@ -126,6 +126,7 @@ class Driver {
     result_.judged_points = folds.points;
     result_.folded_points = folds.folded;
     result_.undecided_points = folds.undecided;
+    result_.collapsed_points = folds.collapsed;
     result_.coincident_points = folds.coincident;
     result_.folded_share = folds.folded_share;
     result_.stage_seconds.folds = seconds_since(folds_start);

@@ -28,6 +28,7 @@ struct Result {
   // The fold measure of the (u,v) (fold_measure.hpp): no connectivity, no trust in the surface.
   // It judges at most 10,000 points, evenly spread over the input order; counts are of those.
   std::size_t judged_points = 0, folded_points = 0, undecided_points = 0, coincident_points = 0;
+  std::size_t collapsed_points = 0;  // of the undecided: neighbourhood squeezed in (u,v)
   double folded_share = 0.0;  // folded / decided points
   int levels = 0;             // quadtree levels present (1 = root only)
   int iterations = 0;         // grid evolutions over all patches

@@ -62,6 +62,7 @@ Run run(const FoldShape& shape, dbs::Options options = {}, double scale = 1.0) {
   std::printf("%-13s levels %d patches %3zu folds %4zu (%5.2f%%) mean %.3g to truth %.3g target %.3g (requested %.3g) noise %.3g measure %.2f%% (%zu/%zu undecided)\n",
               shape.name.c_str(), r.result.levels, r.result.patches.size(), r.folds.folded, 100.0 * r.folds.share, r.result.mean_distance, r.to_truth,
               r.result.accuracy, r.result.requested_accuracy, r.result.noise, 100.0 * r.result.folded_share, r.result.undecided_points, r.result.judged_points);
+  std::printf("%-13s collapsed %zu of the undecided\n", shape.name.c_str(), r.result.collapsed_points);
   return r;
 }
 
@@ -108,6 +109,7 @@ void clean_saddle_has_no_noise(void**) {
   assert_true(r.result.noise < 0.1 * r.result.requested_accuracy);
   assert_true(r.result.accuracy == r.result.requested_accuracy);
   assert_int_equal(r.result.folded_points, 0);
+  assert_int_equal(r.result.collapsed_points, 0);
 }
 
 void noise_does_not_change_the_level_count(void**) {
@@ -136,6 +138,10 @@ void hard_shapes_stay_within_their_bounds(void**) {
     // The reference-free measure never reports more than the reference folds (it misses
     // collapses, which keep their orientation) and is at most 0.1% on the creased box.
     if (std::string(b.name) == "open-box") assert_true(r.result.folded_share <= 0.001);
+    // Where most of the reference folds are collapses (points piled up on walls the surfaces
+    // did not climb), the measure counts collapsed points instead of reporting a clean result
+    // (0.3 showed 0 folded on the fingers): 83 on the dome, 32 on the fingers today.
+    if (std::string(b.name) == "tall-dome" || std::string(b.name) == "fingers") assert_true(r.result.collapsed_points >= 16);
   }
 }
 

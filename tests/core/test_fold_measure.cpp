@@ -64,6 +64,32 @@ void no_folds_on_clean_height_field(void**) {
   assert_true(m.folded_share == 0.0);
   assert_true(share(m.undecided, m.points) < 0.01);
   assert_int_equal(m.coincident, 0);
+  assert_int_equal(m.collapsed, 0);
+}
+
+void squeezed_band_is_collapsed_not_folded(void**) {
+  // A band across a clean height field (0.4 < v < 0.6) squeezed onto the line v = 0.5, as
+  // points a surface never reached pile up: its orientation cannot be told, so nothing is
+  // folded, but the band's inner points are counted collapsed and nothing away from it is.
+  Sample c = sample(height_field(), 4000, 11);
+  for (double& v : c.v)
+    if (v > 0.4 && v < 0.6) v = 0.5 + 1e-5 * (v - 0.5);
+  const FoldMeasure m = measure_folds(c.points, c.u, c.v, 0.0, 2);
+  const double h = cloud_spacing(CloudIndex(c.points));
+  std::size_t band = 0, band_collapsed = 0;
+  for (std::size_t i = 0; i < c.points.size(); ++i) {
+    const double v = c.points[i].y();  // the height field's y is its parameter b
+    if (std::abs(v - 0.5) < 0.1 - 3.0 * h && c.points[i].x() > 3.0 * h && c.points[i].x() < 1.0 - 3.0 * h) {
+      ++band;
+      band_collapsed += m.state[i] == kFoldCollapsed;
+    } else if (std::abs(v - 0.5) > 0.1 + 3.0 * h) {
+      assert_true(m.state[i] != kFoldCollapsed);
+    }
+  }
+  assert_true(band > 400);
+  assert_true(band_collapsed >= 0.9 * band);
+  assert_int_equal(m.folded, 0);
+  assert_true(m.collapsed >= band_collapsed && m.collapsed <= m.undecided);
 }
 
 void no_folds_on_curved_surfaces(void**) {
@@ -323,6 +349,7 @@ int main() {
       cmocka_unit_test(creased_box_folds_at_most_a_thousandth),
       cmocka_unit_test(thin_flap_folds_nothing),
       cmocka_unit_test(flipped_patch_is_flagged),
+      cmocka_unit_test(squeezed_band_is_collapsed_not_folded),
       cmocka_unit_test(global_mirror_folds_nothing),
       cmocka_unit_test(scrambled_parameters_are_undecided),
       cmocka_unit_test(coincident_count_is_exact),
