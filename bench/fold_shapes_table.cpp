@@ -11,7 +11,7 @@
 // points of dist(S(u_i,v_i), noise-free surface); wall time of dbs_parameterize; then the same
 // reference folds and time for the meshless reference.
 //
-// usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1]
+// usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--solver linear|ceres]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -32,7 +32,7 @@ using dbs_folds::FoldCount;
 using dbs_folds::FoldShape;
 
 [[noreturn]] void usage_error(const std::string& message) {
-  std::fprintf(stderr, "dbs-bench-folds: %s\nusage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1]\nshapes:", message.c_str());
+  std::fprintf(stderr, "dbs-bench-folds: %s\nusage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--solver linear|ceres]\nshapes:", message.c_str());
   for (const std::string& name : dbs_folds::fold_shape_names()) std::fprintf(stderr, " %s", name.c_str());
   std::fprintf(stderr, "\n");
   std::exit(2);
@@ -45,6 +45,7 @@ struct Settings {
   int threads = -1;    // -1: the library's default
   int max_level = -1;  // -1: the library's default
   int repair = -1;     // -1: the library's default (DBS_OPT_REPAIR)
+  int solver = -1;     // -1: the library's default (DBS_OPT_SOLVER)
 };
 
 Settings parse_arguments(int argc, char** argv) {
@@ -72,6 +73,10 @@ Settings parse_arguments(int argc, char** argv) {
       settings.max_level = parse_int(arg, value);
     } else if (arg == "--repair") {
       settings.repair = parse_int(arg, value);
+    } else if (arg == "--solver") {
+      if (value == "linear") settings.solver = DBS_SOLVER_LINEAR;
+      else if (value == "ceres") settings.solver = DBS_SOLVER_CERES;
+      else usage_error("--solver: '" + value + "' is not a solver (linear or ceres)");
     } else {
       usage_error("unknown option '" + arg + "'");
     }
@@ -170,15 +175,17 @@ int main(int argc, char** argv) {
   if (settings.threads >= 0) dbs_options_set_int(options, DBS_OPT_THREADS, settings.threads);
   if (settings.max_level >= 0) dbs_options_set_int(options, DBS_OPT_MAX_LEVEL, settings.max_level);
   if (settings.repair >= 0 && dbs_options_set_int(options, DBS_OPT_REPAIR, settings.repair) != DBS_OK) usage_error(std::string("--repair: ") + dbs_last_error_message());
-  int32_t max_level = 0, threads = 0, repair = 0;
+  if (settings.solver >= 0 && dbs_options_set_int(options, DBS_OPT_SOLVER, settings.solver) != DBS_OK) usage_error(std::string("--solver: ") + dbs_last_error_message());
+  int32_t max_level = 0, threads = 0, repair = 0, solver = 0;
+  dbs_options_get_int(options, DBS_OPT_SOLVER, &solver);
   double relative_accuracy = 0.0;
   dbs_options_get_int(options, DBS_OPT_REPAIR, &repair);
   dbs_options_get_int(options, DBS_OPT_MAX_LEVEL, &max_level);
   dbs_options_get_int(options, DBS_OPT_THREADS, &threads);
   dbs_options_get_double(options, DBS_OPT_RELATIVE_ACCURACY, &relative_accuracy);
 
-  std::printf("libdbs %s, max level %d, relative accuracy %g, threads %s, repair %s\n", dbs_version_string(), max_level, relative_accuracy,
-              threads == 0 ? "all" : std::to_string(threads).c_str(), repair ? "on" : "off");
+  std::printf("libdbs %s, max level %d, relative accuracy %g, threads %s, repair %s, solver %s\n", dbs_version_string(), max_level, relative_accuracy,
+              threads == 0 ? "all" : std::to_string(threads).c_str(), repair ? "on" : "off", solver == DBS_SOLVER_CERES ? "ceres" : "linear");
   std::printf("folds: reference triangles whose signed (u,v) area is negative or below 1e-3 of the median, as inverted+collapsed;\n"
               "to truth: mean distance of the result surface at each point's (u,v) to the noise-free surface\n\n");
   std::printf("| shape | points | triangles | levels | patches | folds | folds %% | ref.-free folds | mean distance | target | to truth | time (s) | meshless folds | meshless %% | meshless time (s) |\n");
