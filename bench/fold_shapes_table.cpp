@@ -11,7 +11,7 @@
 // points of dist(S(u_i,v_i), noise-free surface); wall time of dbs_parameterize; then the same
 // reference folds and time for the meshless reference.
 //
-// usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--solver linear|ceres]
+// usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--solver linear|ceres] [--save DIR]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +19,7 @@
 #include <exception>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench_arguments.hpp"
@@ -32,7 +33,7 @@ using dbs_folds::FoldCount;
 using dbs_folds::FoldShape;
 
 [[noreturn]] void usage_error(const std::string& message) {
-  std::fprintf(stderr, "dbs-bench-folds: %s\nusage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--solver linear|ceres]\nshapes:", message.c_str());
+  std::fprintf(stderr, "dbs-bench-folds: %s\nusage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--solver linear|ceres] [--save DIR]\nshapes:", message.c_str());
   for (const std::string& name : dbs_folds::fold_shape_names()) std::fprintf(stderr, " %s", name.c_str());
   std::fprintf(stderr, "\n");
   std::exit(2);
@@ -46,6 +47,7 @@ struct Settings {
   int max_level = -1;  // -1: the library's default
   int repair = -1;     // -1: the library's default (DBS_OPT_REPAIR)
   int solver = -1;     // -1: the library's default (DBS_OPT_SOLVER)
+  std::string save_dir;  // non-empty: each shape's cloud and boundary are written there
 };
 
 Settings parse_arguments(int argc, char** argv) {
@@ -73,6 +75,8 @@ Settings parse_arguments(int argc, char** argv) {
       settings.max_level = parse_int(arg, value);
     } else if (arg == "--repair") {
       settings.repair = parse_int(arg, value);
+    } else if (arg == "--save") {
+      settings.save_dir = value;
     } else if (arg == "--solver") {
       if (value == "linear") settings.solver = DBS_SOLVER_LINEAR;
       else if (value == "ceres") settings.solver = DBS_SOLVER_CERES;
@@ -104,6 +108,25 @@ struct Run {
   double levels = 0, patches = 0, mean_distance = 0, accuracy = 0, to_truth = 0, seconds = 0;
   std::string reference_free = "n/a";  // the library's own fold measure, points (share)
 };
+
+/// Writes the shape as DIR/NAME.xyz and DIR/NAME_boundary.txt (docs/FORMATS.md), so that
+/// dbs-param can run on it (--report pictures); false when a file cannot be written.
+bool save_shape(const FoldShape& shape, const std::string& dir) {
+  const std::string cloud_path = dir + "/" + shape.name + ".xyz", boundary_path = dir + "/" + shape.name + "_boundary.txt";
+  std::FILE* cloud = std::fopen(cloud_path.c_str(), "w");
+  if (!cloud) return false;
+  std::fprintf(cloud, "# %s: %s\n", shape.name.c_str(), shape.description.c_str());
+  for (std::size_t i = 0; i + 2 < shape.xyz.size(); i += 3) std::fprintf(cloud, "%.17g %.17g %.17g\n", shape.xyz[i], shape.xyz[i + 1], shape.xyz[i + 2]);
+  const bool cloud_ok = std::fclose(cloud) == 0;
+  std::FILE* boundary = std::fopen(boundary_path.c_str(), "w");
+  if (!boundary) return false;
+  const std::pair<const char*, const std::vector<double>*> sides[] = {{"bottom", &shape.bottom}, {"right", &shape.right}, {"top", &shape.top}, {"left", &shape.left}};
+  for (const auto& [name, points] : sides) {
+    std::fprintf(boundary, "%s\n", name);
+    for (std::size_t i = 0; i + 2 < points->size(); i += 3) std::fprintf(boundary, "%.17g %.17g %.17g\n", (*points)[i], (*points)[i + 1], (*points)[i + 2]);
+  }
+  return std::fclose(boundary) == 0 && cloud_ok;
+}
 
 double stat(const dbs_result* result, int32_t id) {
   double value = std::nan("");
@@ -194,6 +217,10 @@ int main(int argc, char** argv) {
   int failures = 0;
   for (const std::string& name : settings.shapes) {
     const FoldShape shape = dbs_folds::fold_shape(name);
+    if (!settings.save_dir.empty() && !save_shape(shape, settings.save_dir)) {
+      std::fprintf(stderr, "dbs-bench-folds: cannot write %s into %s\n", shape.name.c_str(), settings.save_dir.c_str());
+      return EXIT_FAILURE;
+    }
     const Run run = run_dbs(shape, options);
     std::string meshless_folds = "n/a", meshless_share = "n/a", meshless_time = "n/a";
     try {
