@@ -152,7 +152,7 @@ DBS_API const char *dbs_version_string(void);
 
 /* Optional parts of the loaded library (pinned ids) for dbs_has_feature (\since 0.1,
  * except where marked). */
-#define DBS_FEATURE_DRACO 0      /* Draco: clouds from .ply, .obj, .drc (dbs_cloud_load) and results to .drc (dbs_result_save) */
+#define DBS_FEATURE_DRACO 0      /* Draco: clouds from .drc (dbs_cloud_load) and results to .drc (dbs_result_save); before 0.4 also .ply and .obj clouds, which libdbs now reads itself in every build */
 #define DBS_FEATURE_VALIDATION 1 /* \since 0.2: dbs_mesh_*, dbs_distortion_*, dbs_distances_* (Qhull) */
 #define DBS_FEATURE_REPORT 2     /* \since 0.2: dbs_report_write and the textured .obj of dbs_mesh_save (libpng) */
 #define DBS_FEATURE_CERES 3      /* \since 0.4: the Ceres solver, DBS_SOLVER_CERES (Ceres) */
@@ -200,11 +200,14 @@ typedef struct dbs_cloud dbs_cloud;
  *  DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_cloud_create(const double *xyz, size_t count, dbs_cloud **out);
 /** Loads .xyz/.txt (text), .ply, .obj or .drc (the extension, in any case, decides); see
- *  docs/FORMATS.md. .ply, .obj and .drc need DBS_FEATURE_DRACO.
+ *  docs/FORMATS.md. Coordinates are the exact doubles the file holds (since 0.4 also from
+ *  .ply and .obj, which no longer need Draco); .drc needs DBS_FEATURE_DRACO. A file whose
+ *  header claims more points than its size can hold is refused before anything is
+ *  allocated for them (DBS_ERR_PARSE; a .drc point cloud: more than 1024 points per byte).
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_IO (cannot open or read), DBS_ERR_PARSE (a
  *  malformed line, header or element; the message names the file and the line or
  *  element), DBS_ERR_NON_FINITE (a NaN or infinite coordinate), DBS_ERR_EMPTY (no
- *  points), DBS_ERR_UNSUPPORTED (an unknown extension; .ply, .obj or .drc without Draco;
+ *  points), DBS_ERR_UNSUPPORTED (an unknown extension; .drc without Draco;
  *  a PLY version other than 1.0), DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_cloud_load(const char *path, dbs_cloud **out);
 /** Frees the cloud; NULL is ignored. Not while another call uses it. \since 0.1 */

@@ -2,6 +2,8 @@
 
 #include "draco_io.hpp"
 #include "error.hpp"
+#include "obj_vertices.hpp"
+#include "ply_vertices.hpp"
 #include "text_io.hpp"
 
 namespace dbs {
@@ -29,7 +31,13 @@ std::vector<Vec3> read_xyz_text(const std::string& path) {
 PointCloud load_cloud(const std::string& path) {
   const std::string ext = lowercase_extension(path);
   if (ext == ".xyz" || ext == ".txt") return PointCloud(read_xyz_text(path));
-  if (ext == ".ply" || ext == ".obj" || ext == ".drc") return PointCloud(read_positions_with_draco(path));
+  if (ext == ".ply") return PointCloud(read_ply_vertices(read_file_bytes(path), path));
+  if (ext == ".obj") {
+    const std::string text = read_file_bytes(path);
+    if (text.empty()) fail(ErrorCode::Empty, path + ": no points (the file is empty)");
+    return PointCloud(read_obj_vertices(text, path));
+  }
+  if (ext == ".drc") return PointCloud(read_positions_with_draco(path));
   const std::string what = ext.empty() ? "no extension" : "unknown extension '" + ext + "'";
   fail(ErrorCode::Unsupported, path + ": " + what + " for a point cloud (expected .xyz, .txt, .ply, .obj or .drc)");
 }

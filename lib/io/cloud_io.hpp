@@ -1,5 +1,5 @@
-// Reading point clouds from files (FORMATS.md). Text .xyz/.txt files are read by a fast
-// reader of our own; .ply, .obj and .drc go through Draco (draco_io).
+// Reading point clouds from files (FORMATS.md). Text .xyz/.txt, .ply and .obj files are read
+// by readers of our own, to exact doubles, in every build; .drc goes through Draco (draco_io).
 #pragma once
 #include <string>
 #include <vector>
@@ -11,7 +11,7 @@ namespace dbs {
 /// By extension (case-insensitive): .xyz .txt .ply .obj .drc. Errors name the file, the line
 /// (or element) and the problem: Error(Io) cannot open/read, Error(Parse) malformed or
 /// truncated, Error(NonFinite), Error(Empty) no points, Error(Unsupported) unknown extension
-/// or a Draco format in a build without Draco.
+/// or a .drc file in a build without Draco.
 PointCloud load_cloud(const std::string& path);
 
 /// x y z per line, separated by spaces, tabs or commas; further columns ignored; '#' starts a

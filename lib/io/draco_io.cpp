@@ -7,17 +7,13 @@
 #include <draco/compression/encode.h>
 #include <draco/core/decoder_buffer.h>
 #include <draco/core/encoder_buffer.h>
-#include <draco/io/obj_decoder.h>
-#include <draco/io/ply_property_reader.h>
-#include <draco/io/ply_reader.h>
 #include <draco/point_cloud/point_cloud.h>
 #include <draco/point_cloud/point_cloud_builder.h>
 
 #include <cmath>
+#include <cstdint>
 #include <memory>
 
-#include "obj_vertices.hpp"
-#include "ply_vertices.hpp"
 #include "text_io.hpp"
 #endif
 
@@ -41,58 +37,33 @@ constexpr int kDecodingSpeed = 5;
   fail(ErrorCode::NonFinite, where + ": " + element + " " + std::to_string(k) + " has a non-finite coordinate");
 }
 
-std::vector<Vec3> read_ply(std::string bytes, const std::string& path) {
-  const PreparedPly ply = prepare_ply_vertices(std::move(bytes), path);
-  draco::DecoderBuffer buffer;
-  buffer.Init(ply.text.data(), ply.text.size());
-  // Draco's PlyReader rather than its PlyDecoder: the decoder accepts only float32 and int32
-  // coordinates (google/draco#360), the reader returns any type as double. (It parses ASCII
-  // values as 32-bit floats, even for double properties; binary values keep their precision.)
-  draco::PlyReader reader;
-  const draco::Status status = reader.Read(&buffer);
-  if (!status.ok()) fail(ErrorCode::Parse, path + ": Draco cannot read the PLY file: " + status.error_msg_string());
-  const draco::PlyElement* vertex = reader.GetElementByName("vertex");
-  if (vertex == nullptr || vertex->num_entries() != ply.vertex_count)
-    fail(ErrorCode::Internal, path + ": Draco read a different vertex count than the PLY header declares");
-  const draco::PlyPropertyReader<double> x(vertex->GetPropertyByName("x"));
-  const draco::PlyPropertyReader<double> y(vertex->GetPropertyByName("y"));
-  const draco::PlyPropertyReader<double> z(vertex->GetPropertyByName("z"));
-  std::vector<Vec3> points(static_cast<std::size_t>(ply.vertex_count));
-  for (int i = 0; i < vertex->num_entries(); ++i) {
-    points[static_cast<std::size_t>(i)] = Vec3(x.ReadValue(i), y.ReadValue(i), z.ReadValue(i));
-    if (!is_finite(points[static_cast<std::size_t>(i)]))
-      non_finite(ply.ascii ? file_line(path, ply_vertex_line(ply, i)) : path, "vertex", static_cast<std::size_t>(i));
-  }
-  return points;
-}
+/// Points a .drc file of `size` bytes may claim: Draco's densest point cloud encodings take
+/// well over 1/1024 byte per point, so a header claiming more lies (a damaged or hostile
+/// file) and would make Draco allocate for it before finding the data missing.
+constexpr std::uint64_t kMaxPointsPerByte = 1024;
 
-std::vector<Vec3> read_obj(const std::string& bytes, const std::string& path) {
-  const std::string vertex_lines = obj_vertex_lines(bytes, path);
-  draco::DecoderBuffer buffer;
-  buffer.Init(vertex_lines.data(), vertex_lines.size());
-  draco::ObjDecoder decoder;
-  // by default the decoder merges equal positions, which would drop points of the cloud
-  // (google/draco#483)
-  decoder.set_deduplicate_input_values(false);
-  draco::PointCloud cloud;
-  const draco::Status status = decoder.DecodeFromBuffer(&buffer, &cloud);
-  if (!status.ok()) fail(ErrorCode::Parse, path + ": Draco cannot read the OBJ vertices: " + status.error_msg_string());
-  const draco::PointAttribute* position = cloud.GetNamedAttribute(draco::GeometryAttribute::POSITION);
-  if (position == nullptr) fail(ErrorCode::Internal, path + ": Draco found no positions in the OBJ vertices");
-  // Without faces and without deduplication, attribute value i is the i-th `v` line.
-  std::vector<Vec3> points(position->size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    double xyz[3];
-    position->ConvertValue<double>(draco::AttributeValueIndex(static_cast<std::uint32_t>(i)), 3, xyz);
-    points[i] = Vec3(xyz[0], xyz[1], xyz[2]);
-    if (!is_finite(points[i])) non_finite(file_line(path, obj_vertex_line(bytes, i)), "vertex", i);
-  }
-  return points;
+/// The point count of a point-cloud .drc header ("DRACO", version, encoder type 0 = point
+/// cloud, method, 16-bit flags, then the count as a 32-bit integer), checked against the
+/// file's size. Files with metadata or of meshes keep their count elsewhere and are left
+/// to Draco.
+void check_claimed_count(const std::string& bytes, const std::string& path) {
+  constexpr std::size_t kCountOffset = 11;
+  constexpr unsigned kMetadataFlag = 0x8000;
+  if (bytes.size() < kCountOffset + 4 || bytes.compare(0, 5, "DRACO") != 0) return;  // Draco reports it
+  const unsigned encoder_type = static_cast<unsigned char>(bytes[7]);
+  const unsigned flags = static_cast<unsigned char>(bytes[9]) | (static_cast<unsigned>(static_cast<unsigned char>(bytes[10])) << 8);
+  if (encoder_type != 0 || (flags & kMetadataFlag)) return;
+  std::uint32_t count = 0;
+  for (int i = 3; i >= 0; --i) count = (count << 8) | static_cast<unsigned char>(bytes[kCountOffset + static_cast<std::size_t>(i)]);
+  if (static_cast<std::uint64_t>(count) > kMaxPointsPerByte * bytes.size())
+    fail(ErrorCode::Parse, path + ": the Draco header claims " + std::to_string(count) + " points, more than a file of " + std::to_string(bytes.size()) + " bytes can hold (at most " +
+                               std::to_string(kMaxPointsPerByte) + " per byte)");
 }
 
 std::unique_ptr<draco::PointCloud> decode_drc(const std::string& path) {
   const std::string bytes = read_file_bytes(path);
   if (bytes.empty()) fail(ErrorCode::Empty, path + ": no points (the file is empty)");
+  check_claimed_count(bytes, path);
   draco::DecoderBuffer buffer;
   buffer.Init(bytes.data(), bytes.size());
   draco::Decoder decoder;
@@ -132,15 +103,7 @@ std::vector<Vec3> read_drc(const std::string& path) {
 
 bool draco_available() { return true; }
 
-std::vector<Vec3> read_positions_with_draco(const std::string& path) {
-  const std::string ext = lowercase_extension(path);
-  if (ext != ".ply" && ext != ".obj" && ext != ".drc") fail(ErrorCode::Unsupported, path + ": Draco reads .ply, .obj and .drc files, not '" + ext + "'");
-  if (ext == ".drc") return read_drc(path);
-  std::string bytes = read_file_bytes(path);
-  if (bytes.empty()) fail(ErrorCode::Empty, path + ": no points (the file is empty)");
-  if (ext == ".ply") return read_ply(std::move(bytes), path);
-  return read_obj(bytes, path);
-}
+std::vector<Vec3> read_positions_with_draco(const std::string& path) { return read_drc(path); }
 
 std::vector<Vec2> read_tex_coords_with_draco(const std::string& path) {
   const std::vector<double> uv = values_per_point(*decode_drc(path), draco::GeometryAttribute::TEX_COORD, 2, path);
@@ -189,7 +152,7 @@ void write_draco_point_cloud(const std::string& path, const std::vector<Vec3>& p
 bool draco_available() { return false; }
 
 std::vector<Vec3> read_positions_with_draco(const std::string& path) {
-  fail(ErrorCode::Unsupported, path + ": .ply, .obj and .drc files are read through Draco, and libdbs was built without Draco");
+  fail(ErrorCode::Unsupported, path + ": .drc files are read through Draco, and libdbs was built without Draco");
 }
 
 std::vector<Vec2> read_tex_coords_with_draco(const std::string& path) {

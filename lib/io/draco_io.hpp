@@ -1,5 +1,6 @@
-// The only part of libdbs that knows Draco: decoding positions from .ply/.obj/.drc and
-// encoding a point cloud with texture coordinates to .drc.
+// The only part of libdbs that knows Draco: decoding positions from .drc files and
+// encoding a point cloud with texture coordinates to .drc (.ply and .obj are read by
+// ply_vertices and obj_vertices, to exact doubles, in every build).
 #pragma once
 #include <string>
 #include <vector>
@@ -10,9 +11,9 @@ namespace dbs {
 
 /// True when libdbs was built with Draco.
 bool draco_available();
-/// POSITION attribute of a PLY, OBJ or DRC file (faces ignored). Throws Error(Io/Parse/
-/// NonFinite/Empty/Unsupported) naming the file, and the line (ASCII PLY, OBJ) or the
-/// vertex (numbered from 0) at fault.
+/// POSITION attribute of a .drc file. Throws Error(Io/Parse/NonFinite/Empty/Unsupported)
+/// naming the file and the point (numbered from 0) at fault; Error(Parse) before decoding
+/// when a point-cloud header claims more than 1024 points per byte of the file.
 std::vector<Vec3> read_positions_with_draco(const std::string& path);
 /// TEX_COORD (u,v) per point of a .drc file, in point order (what write_draco_point_cloud
 /// wrote). Errors as read_positions_with_draco; Error(Parse) when there is no TEX_COORD.

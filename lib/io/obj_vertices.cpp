@@ -30,32 +30,24 @@ void for_each_vertex_line(std::string_view obj, Fn fn) {
 
 }  // namespace
 
-std::string obj_vertex_lines(std::string_view obj, const std::string& path) {
-  std::string out;
-  out.reserve(obj.size());
+std::vector<Vec3> read_obj_vertices(std::string_view obj, const std::string& path) {
+  std::vector<Vec3> points;
+  // an "v x y z" line holds 8 bytes or more: one reservation instead of growing step by step
+  points.reserve(obj.size() / 8 + 1);
   for_each_vertex_line(obj, [&](std::size_t k, std::size_t line, std::string_view fields) {
     Vec3 p;
     const XyzFields parsed = parse_xyz_fields(fields, p);
-    const std::string at = file_line(path, line) + ": vertex " + std::to_string(k) + ": ";
-    if (parsed.count < 3) fail(ErrorCode::Parse, at + parsed.problem());
+    const std::string at = file_line(path, line) + ": vertex " + std::to_string(k);
+    if (parsed.count < 3) fail(ErrorCode::Parse, at + ": " + parsed.problem());
     if (fields.substr(0, fields.size() - parsed.rest.size()).find(',') != std::string_view::npos)
-      fail(ErrorCode::Parse, at + "expected 3 numbers separated by blanks, found a comma");
-    out += "v ";
-    out += fields;
-    out += '\n';
+      fail(ErrorCode::Parse, at + ": expected 3 numbers separated by blanks, found a comma");
+    if (!is_finite(p)) fail(ErrorCode::NonFinite, at + " has a non-finite coordinate");
+    points.push_back(p);
     return true;
   });
-  if (out.empty()) fail(ErrorCode::Empty, path + ": no points (the OBJ file has no 'v' lines)");
-  return out;
-}
-
-std::size_t obj_vertex_line(std::string_view obj, std::size_t k) {
-  std::size_t found = 0;
-  for_each_vertex_line(obj, [&](std::size_t i, std::size_t line, std::string_view) {
-    if (i == k) found = line;
-    return i < k;
-  });
-  return found;
+  if (points.empty()) fail(ErrorCode::Empty, path + ": no points (the OBJ file has no 'v' lines)");
+  points.shrink_to_fit();
+  return points;
 }
 
 }  // namespace dbs

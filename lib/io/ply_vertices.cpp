@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string_view>
 #include <vector>
 
@@ -142,6 +143,8 @@ Header parse_header(std::string_view bytes, const std::string& path) {
   if (!have_format) fail(ErrorCode::Parse, path + ": the PLY header has no format line");
   const auto vertex = std::find_if(h.elements.begin(), h.elements.end(), [](const Element& e) { return e.name == "vertex"; });
   if (vertex == h.elements.end()) fail(ErrorCode::Parse, path + ": the PLY file has no 'vertex' element");
+  const auto second = std::find_if(vertex + 1, h.elements.end(), [](const Element& e) { return e.name == "vertex"; });
+  if (second != h.elements.end()) header_error(path, second->header_line, "a second 'vertex' element (the first is on line " + std::to_string(vertex->header_line + 1) + ")");
   h.vertex = static_cast<std::size_t>(vertex - h.elements.begin());
   for (const char* axis : {"x", "y", "z"}) {
     const auto p = std::find_if(vertex->properties.begin(), vertex->properties.end(), [axis](const Property& q) { return q.name == axis; });
@@ -170,9 +173,34 @@ std::int64_t read_count(const char* p, const ScalarType& t) {
   return static_cast<std::int64_t>(raw ^ sign) - static_cast<std::int64_t>(sign);
 }
 
-// Walks the binary data of elements 0..vertex, turning big-endian values little-endian in
-// place; returns the byte offset where the vertex element ends.
-std::size_t walk_binary(std::string& bytes, const Header& h, const std::string& path) {
+// A scalar of type t at p (little-endian by now) as a double: exact for every PLY type.
+double scalar_value(const char* p, const ScalarType& t) {
+  const std::uint64_t raw = read_unsigned(p, t.bytes);
+  if (t.is_float) {
+    if (t.bytes == 4) {
+      const std::uint32_t bits = static_cast<std::uint32_t>(raw);
+      float f;
+      std::memcpy(&f, &bits, sizeof f);
+      return static_cast<double>(f);
+    }
+    double d;
+    std::memcpy(&d, &raw, sizeof d);
+    return d;
+  }
+  if (!t.is_signed) return static_cast<double>(raw);
+  const std::uint64_t sign = std::uint64_t{1} << (8 * t.bytes - 1);
+  return static_cast<double>(static_cast<std::int64_t>(raw ^ sign) - static_cast<std::int64_t>(sign));
+}
+
+// Index of the scalar property `name` of e (parse_header checked it exists).
+std::size_t property_index(const Element& e, const char* name) {
+  return static_cast<std::size_t>(std::find_if(e.properties.begin(), e.properties.end(), [name](const Property& q) { return q.name == name && !q.is_list; }) - e.properties.begin());
+}
+
+// Walks the binary data of elements 0..vertex (turning big-endian values little-endian in
+// place) and reads the vertices' x, y, z. An element without properties holds no data and
+// is skipped at once, whatever its count.
+std::vector<Vec3> read_binary(std::string& bytes, const Header& h, const std::string& path) {
   const bool swap = h.format == PlyFormat::BigEndian;
   std::size_t pos = h.data_begin;
   auto take = [&](std::size_t n, const Element& e, std::int64_t k) {
@@ -182,10 +210,20 @@ std::size_t walk_binary(std::string& bytes, const Header& h, const std::string& 
     pos += n;
     return p;
   };
+  const Element& vertex = h.elements[h.vertex];
+  const std::size_t axis[3] = {property_index(vertex, "x"), property_index(vertex, "y"), property_index(vertex, "z")};
+  // Each vertex takes at least one byte per coordinate: a count the file cannot hold is
+  // refused before anything is allocated for it.
+  if (static_cast<std::uint64_t>(vertex.count) > bytes.size() - h.data_begin)
+    fail(ErrorCode::Parse, path + ": the header declares " + std::to_string(vertex.count) + " vertices, more than the file's " + std::to_string(bytes.size() - h.data_begin) + " bytes of data can hold (truncated file?)");
+  std::vector<Vec3> points(static_cast<std::size_t>(vertex.count));
   for (std::size_t ei = 0; ei <= h.vertex; ++ei) {
     const Element& e = h.elements[ei];
+    if (e.properties.empty()) continue;
+    const bool is_vertex = ei == h.vertex;
     for (std::int64_t k = 0; k < e.count; ++k) {
-      for (const Property& p : e.properties) {
+      for (std::size_t pi = 0; pi < e.properties.size(); ++pi) {
+        const Property& p = e.properties[pi];
         std::int64_t values = 1;
         if (p.is_list) {
           char* c = take(static_cast<std::size_t>(p.count_type.bytes), e, k);
@@ -196,10 +234,15 @@ std::size_t walk_binary(std::string& bytes, const Header& h, const std::string& 
         char* v = take(static_cast<std::size_t>(values) * static_cast<std::size_t>(p.type.bytes), e, k);
         if (swap)
           for (std::int64_t i = 0; i < values; ++i) std::reverse(v + i * p.type.bytes, v + (i + 1) * p.type.bytes);
+        if (is_vertex)
+          for (int a = 0; a < 3; ++a)
+            if (pi == axis[a]) points[static_cast<std::size_t>(k)][a] = scalar_value(v, p.type);
       }
+      if (is_vertex && !is_finite(points[static_cast<std::size_t>(k)]))
+        fail(ErrorCode::NonFinite, path + ": vertex " + std::to_string(k) + " has a non-finite coordinate");
     }
   }
-  return pos;
+  return points;
 }
 
 // ---- ASCII data --------------------------------------------------------------------
@@ -213,6 +256,7 @@ std::size_t walk_ascii(std::string_view bytes, const Header& h, const std::strin
   std::vector<std::string_view> values;
   for (std::size_t ei = 0; ei <= h.vertex; ++ei) {
     const Element& e = h.elements[ei];
+    if (e.properties.empty()) continue;  // its entries hold no values and take no lines
     for (std::int64_t k = 0; k < e.count; ++k) {
       do {
         if (pos >= bytes.size())
@@ -245,61 +289,55 @@ std::int64_t expected_values(const Element& e, const std::vector<std::string_vie
   return static_cast<std::int64_t>(i);
 }
 
-std::string rebuilt_header(const Header& h) {
-  std::string out;
-  std::size_t next_element = 0;
-  for (std::size_t i = 0; i < h.lines.size(); ++i) {
-    const bool is_element_line = next_element < h.elements.size() && h.elements[next_element].header_line == i;
-    if (is_element_line && next_element > h.vertex) {
-      out += "element " + h.elements[next_element].name + " 0";  // same line count: line numbers hold
-    } else if (h.format == PlyFormat::BigEndian && split_blanks(h.lines[i]).size() == 3 && split_blanks(h.lines[i])[0] == "format") {
-      out += "format binary_little_endian 1.0";
-    } else {
-      out += h.lines[i];
+// Index in an ASCII row of `e` of the value of property `wanted` (list lengths read from
+// the row, which expected_values() has checked).
+std::size_t value_index(const Element& e, const std::vector<std::string_view>& values, std::size_t wanted) {
+  std::size_t i = 0;
+  for (std::size_t pi = 0; pi < wanted; ++pi) {
+    if (!e.properties[pi].is_list) {
+      ++i;
+      continue;
     }
-    if (is_element_line) ++next_element;
-    out += '\n';
+    double n = 0;
+    parse_number(values[i], n);
+    i += 1 + static_cast<std::size_t>(n);
   }
-  return out;
+  return i;
+}
+
+std::vector<Vec3> read_ascii(std::string_view bytes, const Header& h, const std::string& path) {
+  const Element& vertex = h.elements[h.vertex];
+  const std::size_t axis[3] = {property_index(vertex, "x"), property_index(vertex, "y"), property_index(vertex, "z")};
+  // An ASCII vertex takes at least 6 bytes ("0 0 0\n"): a count the file cannot hold is
+  // refused before anything is allocated for it.
+  if (static_cast<std::uint64_t>(vertex.count) > (bytes.size() - h.data_begin) / 6 + 1)
+    fail(ErrorCode::Parse, path + ": the header declares " + std::to_string(vertex.count) + " vertices, more than the file's " + std::to_string(bytes.size() - h.data_begin) + " bytes of data can hold (truncated file?)");
+  std::vector<Vec3> points(static_cast<std::size_t>(vertex.count));
+  walk_ascii(bytes, h, path, [&](const Element& e, std::int64_t k, std::size_t line, const std::vector<std::string_view>& values) {
+    const std::int64_t expected = expected_values(e, values);
+    if (expected < 0) fail(ErrorCode::Parse, file_line(path, line) + ": " + entry_name(e, k) + " has a list length that is not a count");
+    if (expected != static_cast<std::int64_t>(values.size()))
+      fail(ErrorCode::Parse, file_line(path, line) + ": " + entry_name(e, k) + " has " + std::to_string(values.size()) + " values, expected " + std::to_string(expected));
+    double x;
+    for (const std::string_view v : values) {
+      if (!parse_number(v, x)) fail(ErrorCode::Parse, file_line(path, line) + ": " + entry_name(e, k) + ": '" + excerpt(v) + "' is not a number");
+    }
+    if (&e == &vertex) {
+      Vec3& p = points[static_cast<std::size_t>(k)];
+      for (int a = 0; a < 3; ++a) parse_number(values[value_index(e, values, axis[a])], p[a]);
+      if (!is_finite(p)) fail(ErrorCode::NonFinite, file_line(path, line) + ": vertex " + std::to_string(k) + " has a non-finite coordinate");
+    }
+    return true;
+  });
+  return points;
 }
 
 }  // namespace
 
-PreparedPly prepare_ply_vertices(std::string bytes, const std::string& path) {
+std::vector<Vec3> read_ply_vertices(std::string bytes, const std::string& path) {
+  if (bytes.empty()) fail(ErrorCode::Empty, path + ": no points (the file is empty)");
   const Header h = parse_header(bytes, path);
-  std::size_t data_end;
-  if (h.format == PlyFormat::Ascii) {
-    data_end = walk_ascii(bytes, h, path, [&](const Element& e, std::int64_t k, std::size_t line, const std::vector<std::string_view>& values) {
-      const std::int64_t expected = expected_values(e, values);
-      if (expected < 0) fail(ErrorCode::Parse, file_line(path, line) + ": " + entry_name(e, k) + " has a list length that is not a count");
-      if (expected != static_cast<std::int64_t>(values.size()))
-        fail(ErrorCode::Parse, file_line(path, line) + ": " + entry_name(e, k) + " has " + std::to_string(values.size()) + " values, expected " + std::to_string(expected));
-      double x;
-      for (const std::string_view v : values) {
-        if (!parse_number(v, x)) fail(ErrorCode::Parse, file_line(path, line) + ": " + entry_name(e, k) + ": '" + excerpt(v) + "' is not a number");
-      }
-      return true;
-    });
-  } else {
-    data_end = walk_binary(bytes, h, path);
-  }
-  PreparedPly out;
-  out.ascii = h.format == PlyFormat::Ascii;
-  out.vertex_count = h.elements[h.vertex].count;
-  out.text = rebuilt_header(h);
-  out.text.append(bytes, h.data_begin, data_end - h.data_begin);
-  return out;
-}
-
-std::size_t ply_vertex_line(const PreparedPly& ply, std::int64_t k) {
-  const Header h = parse_header(ply.text, "");
-  std::size_t found = 0;
-  walk_ascii(ply.text, h, "", [&](const Element& e, std::int64_t entry, std::size_t line, const std::vector<std::string_view>&) {
-    if (&e != &h.elements[h.vertex] || entry != k) return true;
-    found = line;
-    return false;
-  });
-  return found;
+  return h.format == PlyFormat::Ascii ? read_ascii(bytes, h, path) : read_binary(bytes, h, path);
 }
 
 }  // namespace dbs

@@ -24,16 +24,21 @@ static void at_least_version_compares(void **state) {
   assert_false(DBS_AT_LEAST_VERSION(DBS_VERSION_MAJOR + 1, 0, 0));
 }
 
-/* dbs_has_feature tells the truth: with Draco a PLY cloud loads, without it the load is
- * refused as unsupported; unknown ids and a NULL out are refused. */
+/* dbs_has_feature tells the truth: a PLY cloud loads in every build (since 0.4), a .drc file
+ * with Draco, and without it the load is refused as unsupported; unknown ids and a NULL out
+ * are refused. */
 static void features_are_reported(void **state) {
   (void)state;
   char path[512];
   temp_file(path, sizeof path, "feature.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n");
+  dbs_cloud *cloud = NULL;
+  assert_ok(dbs_cloud_load(path, &cloud));
+  dbs_cloud_destroy(cloud);
+  temp_file(path, sizeof path, "feature.drc", "DRACO, or not\n");
   if (reads_with_draco(path)) { /* without Draco it has checked that the load is refused */
-    dbs_cloud *cloud = NULL;
-    assert_ok(dbs_cloud_load(path, &cloud));
-    dbs_cloud_destroy(cloud);
+    cloud = NULL;
+    assert_failure(dbs_cloud_load(path, &cloud), DBS_ERR_PARSE, "dbs_cloud_load", "feature.drc");
+    assert_null(cloud);
   }
   int32_t out = -7;
   /* The optional rooms: the build's own definitions say what was built. */

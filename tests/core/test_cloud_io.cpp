@@ -165,40 +165,37 @@ void example_data_loads(void**) {
 // ---- PLY -----------------------------------------------------------------------------------
 
 void ascii_ply_round_trips(void**) {
-  if (!dbs::draco_available()) skip();  // reported as skipped, not passed
   // float properties, values exact in float: exact
   const auto exact = float_exact_points(300);
   const std::string f = write_tmp("cloud_io_ascii_float.PLY", ply_header("ascii", exact.size(), "float") + ascii_rows(exact));
   assert_same_points(dbs::load_cloud(f).points(), exact, 0.0);
-  // double properties with further properties and a face list: Draco parses ASCII values
-  // as 32-bit floats, so within float precision
+  // double properties with further properties and a face list: exact doubles (libdbs
+  // reads PLY itself since 0.4; through Draco they were 32-bit floats)
   const auto precise = awkward_points(300);
   std::string rows;
   for (const Vec3& p : precise) rows += format_g17(p.x()) + " " + format_g17(p.y()) + "\t" + format_g17(p.z()) + " 7\r\n";
   const std::string d = write_tmp("cloud_io_ascii_double.ply",
                                   ply_header("ascii", precise.size(), "double", "property int label\nelement face 2\nproperty list uchar int vertex_indices\n") +
                                       rows + "3 0 1 2\n3 2 1 oops\n");  // faces are ignored, even malformed ones
-  assert_same_points(dbs::read_positions_with_draco(d), precise, 1.2e-7);
+  assert_same_points(dbs::load_cloud(d).points(), precise, 0.0);
 }
 
 void binary_ply_round_trips_both_byte_orders(void**) {
-  if (!dbs::draco_available()) skip();  // reported as skipped, not passed
   const auto pts = awkward_points(1000);
-  assert_same_points(dbs::read_positions_with_draco(write_tmp("cloud_io_le.ply", binary_ply(pts, false))), pts, 0.0);
-  assert_same_points(dbs::read_positions_with_draco(write_tmp("cloud_io_be.ply", binary_ply(pts, true))), pts, 0.0);
+  assert_same_points(dbs::load_cloud(write_tmp("cloud_io_le.ply", binary_ply(pts, false))).points(), pts, 0.0);
+  assert_same_points(dbs::load_cloud(write_tmp("cloud_io_be.ply", binary_ply(pts, true))).points(), pts, 0.0);
   // float32 and int coordinates are read too
   const auto exact = float_exact_points(50);
   std::string floats = ply_header("binary_little_endian", exact.size(), "float");
   for (const Vec3& p : exact)
     for (int k = 0; k < 3; ++k) append_binary<float>(floats, static_cast<float>(p[k]), false);
-  assert_same_points(dbs::read_positions_with_draco(write_tmp("cloud_io_f32.ply", floats)), exact, 0.0);
+  assert_same_points(dbs::load_cloud(write_tmp("cloud_io_f32.ply", floats)).points(), exact, 0.0);
   std::string ints = ply_header("binary_little_endian", 2, "short");
   for (std::int16_t v : {-3, 4, 5, 300, -32768, 32767}) append_binary<std::int16_t>(ints, v, false);
-  assert_same_points(dbs::read_positions_with_draco(write_tmp("cloud_io_i16.ply", ints)), {{-3, 4, 5}, {300, -32768, 32767}}, 0.0);
+  assert_same_points(dbs::load_cloud(write_tmp("cloud_io_i16.ply", ints)).points(), {{-3, 4, 5}, {300, -32768, 32767}}, 0.0);
 }
 
 void ply_rejects_malformed_truncated_nonfinite_and_empty(void**) {
-  if (!dbs::draco_available()) skip();  // reported as skipped, not passed
   const std::string header = ply_header("ascii", 5, "float");  // 8 lines
   // ASCII: vertex 2 (line 11) holds a word
   const std::string bad = write_tmp("cloud_io_bad.ply", header + "1 2 3\n4 5 6\n7 abc 9\n10 11 12\n13 14 15\n");
@@ -250,10 +247,45 @@ void ply_rejects_malformed_truncated_nonfinite_and_empty(void**) {
   expect_error([&] { dbs::load_cloud(empty); }, ErrorCode::Empty, {empty});
 }
 
+void ply_values_are_exact_doubles(void**) {
+  // Values a float cannot hold, map coordinates and magnitudes beyond float, in ASCII (a list
+  // property before x, and x, y, z out of order) and in big-endian binary of mixed types.
+  const std::string ascii = write_tmp("cloud_io_exact.ply",
+                                      "ply\nformat ascii 1.0\nelement vertex 2\nproperty list uchar int ids\nproperty double z\nproperty double x\nproperty float y\n"
+                                      "end_header\n2 7 8 1e300 500000.123 1.000000001\n0 -2.5e-300 -4321987.654321 0.1\n");
+  assert_same_points(dbs::load_cloud(ascii).points(), {{500000.123, 1.000000001, 1e300}, {-4321987.654321, 0.1, -2.5e-300}}, 0.0);
+  std::string binary = "ply\nformat binary_big_endian 1.0\nelement vertex 2\nproperty int x\nproperty uint y\nproperty double z\nend_header\n";
+  for (const Vec3& p : std::vector<Vec3>{{-2147483648.0, 4294967295.0, 1e300}, {7, 0, -0.1}}) {
+    append_binary<std::int32_t>(binary, static_cast<std::int32_t>(p.x()), true);
+    append_binary<std::uint32_t>(binary, static_cast<std::uint32_t>(p.y()), true);
+    append_binary<double>(binary, p.z(), true);
+  }
+  assert_same_points(dbs::load_cloud(write_tmp("cloud_io_exact_be.ply", binary)).points(), {{-2147483648.0, 4294967295.0, 1e300}, {7, 0, -0.1}}, 0.0);
+}
+
+void ply_header_claims_are_checked_before_reading(void**) {
+  // Elements without properties hold nothing: 2^31 - 1 of them before the vertices cost no
+  // time, in binary and in ASCII.
+  for (const char* format : {"binary_little_endian", "ascii"}) {
+    std::string text = std::string("ply\nformat ") + format + " 1.0\nelement junk 2147483647\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
+    if (std::string(format) == "ascii") text += "1 2 3\n";
+    else
+      for (float v : {1.0f, 2.0f, 3.0f}) append_binary<float>(text, v, false);
+    assert_same_points(dbs::load_cloud(write_tmp("cloud_io_junk.ply", text)).points(), {{1, 2, 3}}, 0.0);
+  }
+  // A vertex count the data cannot hold is refused before anything is allocated for it.
+  const std::string huge_binary = write_tmp("cloud_io_huge_binary.ply", ply_header("binary_little_endian", 2147483647, "double") + std::string(100, '\0'));
+  expect_error([&] { dbs::load_cloud(huge_binary); }, ErrorCode::Parse, {huge_binary, "2147483647 vertices", "100 bytes"});
+  const std::string huge_ascii = write_tmp("cloud_io_huge_ascii.ply", ply_header("ascii", 2147483647, "double") + "1 2 3\n");
+  expect_error([&] { dbs::load_cloud(huge_ascii); }, ErrorCode::Parse, {huge_ascii, "2147483647 vertices"});
+  // Two vertex elements: which one is meant? Refused, naming both lines.
+  const std::string two = write_tmp("cloud_io_two_vertex.ply", ply_header("ascii", 1, "float", "element vertex 1\nproperty float x\nproperty float y\nproperty float z\n") + "1 2 3\n4 5 6\n");
+  expect_error([&] { dbs::load_cloud(two); }, ErrorCode::Parse, {two + ":8:", "second 'vertex' element", "line 4"});
+}
+
 // ---- OBJ -----------------------------------------------------------------------------------
 
 void obj_reads_every_v_line_and_ignores_the_rest(void**) {
-  if (!dbs::draco_available()) skip();  // reported as skipped, not passed
   const std::string text =
       "# exported mesh\n"
       "mtllib missing.mtl\n"
@@ -274,11 +306,13 @@ void obj_reads_every_v_line_and_ignores_the_rest(void**) {
   const auto many = float_exact_points(2000);
   std::string big;
   for (const Vec3& p : many) big += "v " + format_g17(p.x()) + " " + format_g17(p.y()) + " " + format_g17(p.z()) + "\n";
-  assert_same_points(dbs::read_positions_with_draco(write_tmp("cloud_io_many.obj", big)), many, 0.0);
+  assert_same_points(dbs::load_cloud(write_tmp("cloud_io_many.obj", big)).points(), many, 0.0);
+  // exact doubles, also where a float would round (since 0.4; through Draco they were floats)
+  assert_same_points(dbs::load_cloud(write_tmp("cloud_io_exact.obj", "v 500000.123 1.000000001 1e300\nv -4321987.654321 0.1 -2.5e-300\n")).points(),
+                     {{500000.123, 1.000000001, 1e300}, {-4321987.654321, 0.1, -2.5e-300}}, 0.0);
 }
 
 void obj_rejects_malformed_truncated_nonfinite_and_empty(void**) {
-  if (!dbs::draco_available()) skip();  // reported as skipped, not passed
   const std::string bad = write_tmp("cloud_io_bad.obj", "# c\nv 1 2 3\nvn 0 0 1\nv 4 abc 6\nv 7 8 9\n");
   expect_error([&] { dbs::load_cloud(bad); }, ErrorCode::Parse, {bad + ":4:", "vertex 1", "'abc'"});
   const std::string truncated = write_tmp("cloud_io_truncated.obj", "v 1 2 3\nv 4 5 6\nv 7 8");
@@ -343,6 +377,13 @@ void drc_rejects_garbage_truncated_and_empty(void**) {
     expect_error([&] { dbs::load_cloud(cut); }, ErrorCode::Parse, {cut, "not a valid Draco file"});
   }
   const std::string empty = write_tmp("cloud_io_empty.drc", "");
+  // A point-cloud header claiming 2^31 points in a file of a few hundred bytes: refused before
+  // Draco allocates for them.
+  std::string lying = bytes;
+  const std::uint32_t claim = 0x80000000u;
+  for (int i = 0; i < 4; ++i) lying[11 + static_cast<std::size_t>(i)] = static_cast<char>((claim >> (8 * i)) & 0xff);
+  const std::string liar = write_tmp("cloud_io_lying.drc", lying);
+  expect_error([&] { dbs::load_cloud(liar); }, ErrorCode::Parse, {liar, "claims 2147483648 points"});
   expect_error([&] { dbs::load_cloud(empty); }, ErrorCode::Empty, {empty});
   const std::string missing = core_test::tmp_path("cloud_io_missing.drc");
   expect_error([&] { dbs::load_cloud(missing); }, ErrorCode::Io, {missing});
@@ -368,6 +409,8 @@ int main(void) {
       cmocka_unit_test(ascii_ply_round_trips),
       cmocka_unit_test(binary_ply_round_trips_both_byte_orders),
       cmocka_unit_test(ply_rejects_malformed_truncated_nonfinite_and_empty),
+      cmocka_unit_test(ply_values_are_exact_doubles),
+      cmocka_unit_test(ply_header_claims_are_checked_before_reading),
       cmocka_unit_test(obj_reads_every_v_line_and_ignores_the_rest),
       cmocka_unit_test(obj_rejects_malformed_truncated_nonfinite_and_empty),
       cmocka_unit_test(drc_round_trips_within_quantization),

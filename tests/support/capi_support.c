@@ -187,6 +187,9 @@ int has_draco(void) {
 }
 
 int reads_with_draco(const char *path) {
+  /* since 0.4 .ply and .obj are read by libdbs itself in every build; only .drc needs Draco */
+  const size_t length = strlen(path);
+  if (length < 4 || strcmp(path + length - 4, ".drc") != 0) return 1;
   if (has_draco()) return 1;
   dbs_cloud *cloud = NULL;
   assert_failure(dbs_cloud_load(path, &cloud), DBS_ERR_UNSUPPORTED, "dbs_cloud_load", "built without Draco");

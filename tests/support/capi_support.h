@@ -57,9 +57,9 @@ void check_load_error(enum load_kind kind, const char *name, const char *text, i
 
 /* 1 when the loaded libdbs has Draco (dbs_has_feature), else 0. */
 int has_draco(void);
-/* 1 when the loaded libdbs has Draco. Without it, asserts that loading
- * `path` (a .ply, .obj or .drc file) is refused as unsupported, naming Draco, and returns 0:
- * the caller then skips what only Draco can read. */
+/* 1 when the loaded libdbs reads `path`: a .ply or .obj file in every build (since 0.4), a
+ * .drc file when it has Draco. Without Draco, asserts that loading a .drc file is refused as
+ * unsupported, naming Draco, and returns 0: the caller then skips what only Draco can read. */
 int reads_with_draco(const char *path);
 
 /* Asserts that `status` equals `expected` and that the thread's last error message starts
