@@ -12,7 +12,7 @@
 //
 // usage: dbs-bench [--surface smooth|rippled|outliers|both|all] [--sizes 10k,100k,1M] [--threads N]
 //                  [--max-level N] [--relative-accuracy F] [--solver linear|ceres]
-//                  [--loss none|huber|cauchy|soft_l1] [--cancel-trials N]
+//                  [--loss none|huber|cauchy|soft_l1] [--repair 0|1] [--cancel-trials N]
 //
 // With --cancel-trials N, a second table per surface gives how soon the library answers its
 // progress callback: the longest silence between two calls, and the median and largest time
@@ -113,7 +113,7 @@ void check(int status, const char* what) {
 }
 
 [[noreturn]] void usage_error(const std::string& message) {
-  std::fprintf(stderr, "dbs-bench: %s\nusage: dbs-bench [--surface smooth|rippled|outliers|both|all] [--sizes 10k,100k,1M] [--threads N] [--max-level N] [--relative-accuracy F] [--solver linear|ceres] [--loss none|huber|cauchy|soft_l1] [--cancel-trials N]\n", message.c_str());
+  std::fprintf(stderr, "dbs-bench: %s\nusage: dbs-bench [--surface smooth|rippled|outliers|both|all] [--sizes 10k,100k,1M] [--threads N] [--max-level N] [--relative-accuracy F] [--solver linear|ceres] [--loss none|huber|cauchy|soft_l1] [--repair 0|1] [--cancel-trials N]\n", message.c_str());
   std::exit(2);
 }
 
@@ -139,6 +139,7 @@ struct Settings {
   double relative_accuracy = -1.0;  // < 0: the library's default
   int solver = DBS_SOLVER_LINEAR;
   int loss = DBS_LOSS_NONE;
+  int repair = -1;        // -1: the library's default (DBS_OPT_REPAIR)
   int cancel_trials = 0;  // 0: no responsiveness table
 };
 
@@ -171,6 +172,8 @@ Settings parse_arguments(int argc, char** argv) {
       if (value == "linear") settings.solver = DBS_SOLVER_LINEAR;
       else if (value == "ceres") settings.solver = DBS_SOLVER_CERES;
       else usage_error("--solver: '" + value + "' is not linear or ceres");
+    } else if (arg == "--repair") {
+      settings.repair = parse_int(arg, value);
     } else if (arg == "--loss") {
       const char* const names[] = {"none", "huber", "cauchy", "soft_l1"};  // DBS_LOSS_* order
       settings.loss = -1;
@@ -207,6 +210,9 @@ int main(int argc, char** argv) {
   if (settings.max_level >= 0) check(dbs_options_set_int(options, DBS_OPT_MAX_LEVEL, settings.max_level), "dbs_options_set_int(max_level)");
   check(dbs_options_set_int(options, DBS_OPT_SOLVER, settings.solver), "dbs_options_set_int(solver)");
   check(dbs_options_set_int(options, DBS_OPT_LOSS, settings.loss), "dbs_options_set_int(loss)");
+  if (settings.repair >= 0) check(dbs_options_set_int(options, DBS_OPT_REPAIR, settings.repair), "dbs_options_set_int(repair)");
+  int32_t repair = 0;
+  dbs_options_get_int(options, DBS_OPT_REPAIR, &repair);
   if (settings.relative_accuracy > 0.0) check(dbs_options_set_double(options, DBS_OPT_RELATIVE_ACCURACY, settings.relative_accuracy), "dbs_options_set_double(relative_accuracy)");
   int32_t max_level = 0;
   double relative_accuracy = 0.0;
@@ -216,8 +222,9 @@ int main(int argc, char** argv) {
   check(dbs_boundary_create(bottom, 2, right, 2, top, 2, left, 2, &boundary), "dbs_boundary_create");
 
   static const char* const loss_names[] = {"none", "huber", "cauchy", "soft_l1"};
-  std::printf("libdbs %s, max level %d, relative accuracy %g, threads %s, solver %s, loss %s\n", dbs_version_string(), max_level, relative_accuracy,
-              settings.threads == 0 ? "all" : std::to_string(settings.threads).c_str(), settings.solver == DBS_SOLVER_CERES ? "ceres" : "linear", loss_names[settings.loss]);
+  std::printf("libdbs %s, max level %d, relative accuracy %g, threads %s, solver %s, loss %s, repair %s\n", dbs_version_string(), max_level, relative_accuracy,
+              settings.threads == 0 ? "all" : std::to_string(settings.threads).c_str(), settings.solver == DBS_SOLVER_CERES ? "ceres" : "linear", loss_names[settings.loss],
+              repair ? "on" : "off");
   std::printf("times in seconds: the whole dbs_parameterize call, then its stages (index: k-d tree, length scale and noise estimate;\n"
               "evolve: base surfaces on all levels; subdivide: middle curves and subclouds; project: every point onto its leaves;\n"
               "folds: the reference-free fold measure); noise: the estimated sigma; folded: its share of folded points\n");

@@ -43,7 +43,7 @@ static const char *const usage_text =
     "  --near F                   subcloud 'near' limit, fraction of a patch diagonal [0.25]\n"
     "  --own F                    subcloud 'own' limit, fraction of a patch diagonal [0.05]\n"
     "  --noise-floor 0|1          raise the target to the cloud's noise floor [1]\n"
-    "  --repair 0|1               last-resort repair of points the surfaces never reached [0]\n"
+    "  --repair 0|1               last-resort repair of points the surfaces never reached [1]\n"
     "  --report DIR               also write a validation report into DIR: mesh files,\n"
     "                             pictures and summary.json (see dbs_report_write)\n"
     "  -q, --quiet                no progress and no summary\n"

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Dense>
+
 #include "cloud_index.hpp"
 #include "parallel.hpp"
+#include "spline_displacement.hpp"
 
 namespace dbs {
 
@@ -46,18 +49,169 @@ Vec2 step_towards_foot(const Result& result, const Vec3& q, const Vec2& start, d
   return x;
 }
 
+/// Refits `leaf`'s grid so that its surface at each data point's (u,v) comes close to the
+/// point: least squares over `ids` (points whose (u,v) lie on the leaf), the interior nodes
+/// drawn towards where they are by a Tikhonov term of kRefitRegularization times the mean
+/// diagonal of the normal matrix, so that nodes with little data stay. The surface is its
+/// boundary's Coons patch plus a spline displacement linear in the grid's interior values,
+/// so the fit is one small dense solve; the boundary, hence every seam, is unchanged.
+void refit_leaf(Patch& leaf, const std::vector<std::size_t>& ids, const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v) {
+  const Grid& grid = leaf.grid;
+  const int nu = grid.nu, nv = grid.nv;
+  if (nu < 3 || nv < 3 || ids.empty()) return;
+  const int mi = nu - 2, mj = nv - 2, m = mi * mj;
+  if (m > kMaxRefitNodes) return;  // a dense m x m system beyond this costs more than it is worth
+  const BaseSurface coons(leaf.surface.boundary());
+  // The spline is a tensor product of linear 1D interpolations, so the displacement of a
+  // unit value at node (i,j) is phi_i(s) psi_j(t), both cardinal (1 at their own site, 0 at
+  // the others): phi_i is read along the grid line t = v(1) of a unit at (i,1), psi_j along
+  // s = u(1) of a unit at (1,j).
+  std::vector<SplineDisplacement> phi, psi;
+  for (int i = 1; i + 1 < nu; ++i) {
+    Grid unit(nu, nv);
+    unit(i, 1) = Vec3(1.0, 0.0, 0.0);
+    phi.emplace_back(unit);
+  }
+  for (int j = 1; j + 1 < nv; ++j) {
+    Grid unit(nu, nv);
+    unit(1, j) = Vec3(1.0, 0.0, 0.0);
+    psi.emplace_back(unit);
+  }
+  // The normal equations, accumulated point by point (no n x m matrix: a leaf may hold
+  // most of a large cloud).
+  Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(m, m), rhs = Eigen::MatrixXd::Zero(m, 3), g0(m, 3);
+  Eigen::VectorXd a(m), ph(mi), ps(mj);
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    const Vec2 st = leaf.rect.to_local(u[ids[k]], v[ids[k]]).cwiseMax(0.0).cwiseMin(1.0);
+    for (int i = 0; i < mi; ++i) ph[i] = phi[static_cast<std::size_t>(i)].eval(st.x(), grid.v(1)).x();
+    for (int j = 0; j < mj; ++j) ps[j] = psi[static_cast<std::size_t>(j)].eval(grid.u(1), st.y()).x();
+    for (int c = 0; c < m; ++c) a[c] = ph[c % mi] * ps[c / mi];
+    normal.selfadjointView<Eigen::Lower>().rankUpdate(a);
+    rhs.noalias() += a * (points[ids[k]] - coons.eval(st.x(), st.y())).transpose();
+  }
+  for (int c = 0; c < m; ++c) {
+    const int i = 1 + c % mi, j = 1 + c / mi;
+    g0.row(c) = (grid(i, j) - coons.eval(grid.u(i), grid.v(j))).transpose();
+  }
+  const double lambda = kRefitRegularization * normal.diagonal().mean();
+  if (!(lambda > 0.0)) return;  // no data reaches a node
+  normal.diagonal().array() += lambda;
+  // LDLT reads the lower triangle, the one accumulated.
+  const Eigen::MatrixXd g = normal.ldlt().solve(rhs + lambda * g0);
+  if (!g.allFinite()) return;
+  Grid fitted = grid;
+  for (int c = 0; c < m; ++c) {
+    const int i = 1 + c % mi, j = 1 + c / mi;
+    fitted(i, j) = coons.eval(grid.u(i), grid.v(j)) + Vec3(g(c, 0), g(c, 1), g(c, 2));
+  }
+  leaf.surface = BaseSurface(leaf.surface.boundary(), fitted);
+  leaf.grid = std::move(fitted);
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  const auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), mid, values.end());
+  return *mid;
+}
+
+/// Whether far point i (at `distance` from its surface) stands alone, a gross outlier rather
+/// than a sheet the surfaces missed: within r = max(distance / 2, kIsolationSpacings h) of
+/// it, a sheet of the cloud's spacing h holds about 0.785 (r / h)^2 points; an outlier holds
+/// few (the surface it sticks out of is `distance` away, fellow outliers are sparse). It is
+/// isolated when fewer than kIsolationShare of those (at least 3, at most 64) lie within r.
+bool isolated(const CloudIndex& index, const std::vector<Vec3>& points, std::size_t i, double distance, double h) {
+  const double r = std::max(0.5 * distance, kIsolationSpacings * h);
+  const double expected = 0.785 * (r / h) * (r / h);
+  const std::size_t needed = static_cast<std::size_t>(std::clamp(std::ceil(kIsolationShare * expected), 3.0, 64.0));
+  std::vector<std::size_t> ids;
+  std::vector<double> d2;
+  index.knn(points[i], needed + 1, ids, d2);  // the point itself comes first
+  return d2.size() < needed + 1 || d2.back() > r * r;
+}
+
+/// Refits every leaf holding a repaired point (refit_leaf) to the (u,v) of its points that
+/// are not isolated far points, and recomputes the distance of every point of those leaves
+/// at its (u,v). A refit that raises the median distance of the leaf's points is undone.
+/// Returns the ids of the leaves refitted, in increasing order.
+/// The trust radius of point i's step towards its foot: kRepairTrust times the mean (u,v)
+/// distance to its nearest points in 3D (`neighbours`), so that a step cannot carry it past
+/// them (0 without neighbours).
+double trust_radius(const Result& result, std::size_t i, const std::vector<std::size_t>& neighbours) {
+  if (neighbours.empty()) return 0.0;
+  const Vec2 at(result.u[i], result.v[i]);
+  double spread = 0.0;
+  for (std::size_t m : neighbours) spread += (Vec2(result.u[m], result.v[m]) - at).norm();
+  return kRepairTrust * spread / static_cast<double>(neighbours.size());
+}
+
+std::vector<int> refit_repaired_leaves(Result& result, const std::vector<Vec3>& points, const std::vector<char>& outlier, int threads) {
+  std::vector<std::vector<std::size_t>> data(result.patches.size()), members(result.patches.size());
+  std::vector<char> touched(result.patches.size(), 0);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::size_t leaf = static_cast<std::size_t>(result.leaf_at(result.u[i], result.v[i]));
+    members[leaf].push_back(i);
+    if (!outlier[i]) data[leaf].push_back(i);
+    if (result.repaired[i]) touched[leaf] = 1;
+  }
+  std::vector<int> leaves;
+  for (std::size_t id = 0; id < touched.size(); ++id)
+    if (touched[id]) leaves.push_back(static_cast<int>(id));
+  // Each leaf writes only its own patch, each point only its own distance.
+  std::vector<char> kept(leaves.size(), 0);
+  parallel_for(leaves.size(), threads, [&](std::size_t k) {
+    const std::size_t id = static_cast<std::size_t>(leaves[k]);
+    Patch& leaf = result.patches[id];
+    std::vector<double> before, after;
+    for (std::size_t i : members[id]) before.push_back((result.evaluate(result.u[i], result.v[i]) - points[i]).norm());
+    const BaseSurface old_surface = leaf.surface;
+    const Grid old_grid = leaf.grid;
+    refit_leaf(leaf, data[id], points, result.u, result.v);
+    for (std::size_t i : members[id]) after.push_back((result.evaluate(result.u[i], result.v[i]) - points[i]).norm());
+    // A fit that would move the surface away from most of the leaf's points is not kept.
+    if (median(after) > median(before)) {
+      leaf.surface = old_surface;  // and the distances stay as they were
+      leaf.grid = old_grid;
+      return;
+    }
+    kept[k] = 1;
+    for (std::size_t m = 0; m < members[id].size(); ++m) result.distance[members[id][m]] = after[m];
+  });
+  // (Stepping every point of a refitted leaf towards its foot on the new surface was tried:
+  // it halves the mushroom's mean distance but nearly doubles its folds.)
+  std::vector<int> refitted;
+  for (std::size_t k = 0; k < leaves.size(); ++k)
+    if (kept[k]) refitted.push_back(leaves[k]);
+  return refitted;
+}
+
 }  // namespace
 
-std::size_t repair_far_points(Result& result, const std::vector<Vec3>& points, int threads) {
+Repair repair_far_points(Result& result, const std::vector<Vec3>& points, int threads) {
   const std::size_t n = points.size();
   result.repaired.assign(n, 0);
   std::vector<std::size_t> far;
   for (std::size_t i = 0; i < n; ++i)
     if (result.distance[i] > kRepairFactor * result.accuracy && result.distance[i] > kRepairSpacings * result.length_scale) far.push_back(i);
-  if (far.empty() || far.size() == n) return 0;  // nothing to repair, or nothing to repair from
+  if (far.empty() || far.size() == n) return {};  // nothing to repair, or nothing to repair from
+
+  // Gross outliers are left where they are and out of the refit: a harmonic fill would give
+  // them the (u,v) of the surface under them anyway, and a fit through them would pull the
+  // surface off the clean points.
+  const CloudIndex index(points);
+  std::vector<char> outlier(n, 0);
+  parallel_for(far.size(), threads, [&](std::size_t f) { outlier[far[f]] = isolated(index, points, far[f], result.distance[far[f]], result.length_scale) ? 1 : 0; });
+  far.erase(std::remove_if(far.begin(), far.end(), [&](std::size_t i) { return outlier[i] != 0; }), far.end());
+  if (far.empty()) return {};
+
+  struct Placement {
+    double u, v, distance;
+    int patch, level;
+  };
+  std::vector<Placement> before(far.size());
+  for (std::size_t f = 0; f < far.size(); ++f) before[f] = {result.u[far[f]], result.v[far[f]], result.distance[far[f]], result.patch[far[f]], result.level[far[f]]};
 
   // Each far point's neighbours and their normalized inverse-distance weights.
-  const CloudIndex index(points);
   std::vector<std::vector<std::size_t>> neighbours(far.size());
   std::vector<std::vector<double>> weights(far.size());
   parallel_for(far.size(), threads, [&](std::size_t f) {
@@ -89,11 +243,7 @@ std::size_t repair_far_points(Result& result, const std::vector<Vec3>& points, i
   // Towards the foot, within a fraction of the spread of the neighbours' (u,v).
   std::vector<Vec2> moved(far.size());
   parallel_for(far.size(), threads, [&](std::size_t f) {
-    const Vec2 start(result.u[far[f]], result.v[far[f]]);
-    double spread = 0.0;
-    for (std::size_t m : neighbours[f]) spread += (Vec2(result.u[m], result.v[m]) - start).norm();
-    const double radius = neighbours[f].empty() ? 0.0 : kRepairTrust * spread / static_cast<double>(neighbours[f].size());
-    moved[f] = step_towards_foot(result, points[far[f]], start, radius);
+    moved[f] = step_towards_foot(result, points[far[f]], Vec2(result.u[far[f]], result.v[far[f]]), trust_radius(result, far[f], neighbours[f]));
   });
   std::size_t repaired = 0;
   for (std::size_t f = 0; f < far.size(); ++f) {
@@ -108,7 +258,31 @@ std::size_t repair_far_points(Result& result, const std::vector<Vec3>& points, i
     result.level[i] = result.patches[leaf].level;
     result.repaired[i] = 1;
   }
-  return repaired;
+  if (repaired == 0) return {};
+  Repair out;
+  out.refitted = refit_repaired_leaves(result, points, outlier, threads);
+  // A repaired point whose leaf kept its surface (its refit would have moved the surface
+  // away from most of the leaf's points) goes back to its foot: without the refit the fill
+  // only moves it off the surface.
+  std::vector<char> refitted(result.patches.size(), 0);
+  for (int id : out.refitted) refitted[static_cast<std::size_t>(id)] = 1;
+  for (std::size_t f = 0; f < far.size(); ++f) {
+    const std::size_t i = far[f];
+    if (!result.repaired[i]) continue;
+    if (refitted[static_cast<std::size_t>(result.leaf_at(result.u[i], result.v[i]))]) {
+      ++out.repaired;
+      continue;
+    }
+    result.repaired[i] = 0;
+    result.u[i] = before[f].u;
+    result.v[i] = before[f].v;
+    result.patch[i] = before[f].patch;
+    result.level[i] = before[f].level;
+    result.distance[i] = before[f].distance;
+    // its foot's leaf may have been refitted meanwhile
+    if (refitted[static_cast<std::size_t>(result.leaf_at(result.u[i], result.v[i]))]) result.distance[i] = (result.evaluate(result.u[i], result.v[i]) - points[i]).norm();
+  }
+  return out;
 }
 
 }  // namespace dbs

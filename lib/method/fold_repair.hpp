@@ -1,18 +1,21 @@
-// The last-resort repair of a parameterization (off by default, DBS_OPT_REPAIR). A point whose
-// foot lies far from its leaf is one the base surfaces never reached (under an overhang, up a
-// steep wall): its orthogonal foot sits on a surface that passes it at a distance, and points
-// projected from afar crowd into a small part of the domain and fold. Such a point takes the
+// The last-resort repair of a parameterization (DBS_OPT_REPAIR). A point whose foot lies far
+// from its leaf is one the base surfaces never reached (under an overhang, up a steep wall):
+// its orthogonal foot sits on a surface that passes it at a distance, and points projected
+// from afar crowd into a small part of the domain and fold. Such a point takes the
 // inverse-distance mean of the (u,v) of its nearest points in 3D (a harmonic fill, the other
 // points fixed), then moves towards its orthogonal foot on the result surface within a trust
-// radius. Its distance, patch and level are then those of the surface at its new (u,v), and it
-// is flagged.
+// radius, and is flagged. Then every leaf holding a repaired point is refitted to its points
+// at their (u,v) (a least-squares fit of its grid, its boundary unchanged), so the surface
+// comes to the points it had missed, and every point of those leaves gets the distance of
+// the refitted surface at its (u,v), patch and level of the leaf there.
 //
 // "Far" is more than kRepairFactor times the accuracy target used (which the noise floor keeps
 // above the noise, so a noisy cloud's points are not taken for unreached ones) and more than
-// kRepairSpacings cloud spacings. Measured on the hard shapes of dbs-bench-folds: it takes the
-// mushroom from 7.2% to 0.12% folded reference triangles and the tall dome from 8.2% to 0.18%,
-// but raises their mean distance by 17% and 43% (the repaired points are not on the surface),
-// which is why it is not on by default.
+// kRepairSpacings cloud spacings. A far point that stands alone (a gross outlier) is neither
+// repaired nor fitted. Measured on the hard shapes of dbs-bench-folds: the mushroom goes from
+// 7.2% to 0.12% folded reference triangles and its mean distance from 0.0208 to 0.0047, the
+// tall dome from 8.2% to 0.18% and 0.0183 to 0.011 (the fill alone, without the refit, raised
+// their mean distance by 17% and 43%).
 #pragma once
 #include <cstddef>
 #include <vector>
@@ -26,10 +29,21 @@ constexpr double kRepairSpacings = 1.0;        ///< ... and beyond this many spa
 constexpr std::size_t kRepairNeighbours = 12;  ///< neighbours of the harmonic fill
 constexpr int kRepairSweeps = 200;             ///< Gauss-Seidel sweeps, in point order
 constexpr double kRepairTrust = 0.25;          ///< step towards the foot: at most this x the mean (u,v) distance to the neighbours
+constexpr double kIsolationSpacings = 3.0;      ///< a far point's neighbourhood: at least this many spacings h ...
+constexpr double kIsolationShare = 0.25;        ///< ... isolated when it holds less than this share of a sheet's points
+constexpr double kRefitRegularization = 1e-2;   ///< Tikhonov weight of the refit, times the mean diagonal of its normal matrix
+constexpr int kMaxRefitNodes = 1024;            ///< leaves with more interior grid nodes (a grid above 34 x 34) are not refitted
+
+/// What repair_far_points did.
+struct Repair {
+  std::size_t repaired = 0;        ///< points given a new (u,v)
+  std::vector<int> refitted;       ///< leaves refitted, in increasing id order
+};
 
 /// Repairs the far points of `result` (parameters of `points`, which it was made from) in
-/// place, setting result.repaired; returns how many were repaired. Deterministic for any
-/// thread count.
-std::size_t repair_far_points(Result& result, const std::vector<Vec3>& points, int threads);
+/// place, setting result.repaired, and refits the leaves they land on (their grids,
+/// surfaces and the distances of their points change; their mean/max figures are left to the
+/// caller). Deterministic for any thread count.
+Repair repair_far_points(Result& result, const std::vector<Vec3>& points, int threads);
 
 }  // namespace dbs

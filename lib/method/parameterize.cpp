@@ -116,7 +116,7 @@ class Driver {
     const auto parameterize_start = Clock::now();
     project_across_borders();
     result_.repaired.assign(points_.size(), 0);
-    if (options_.repair) result_.repaired_points = repair_far_points(result_, points_, threads_);
+    if (options_.repair) repair();
     summarize();
     result_.stage_seconds.parameterize += seconds_since(parameterize_start);
     const double levels_end = level_progress_end(result_.levels - 1);
@@ -312,9 +312,14 @@ class Driver {
       consider(leaf.subcloud[k], leaf, foot);
       meter_.add();
     });
+    judge_leaf(leaf, distance);
+  }
+
+  /// A leaf's mean and max distance over `distance` and whether it met the target. Summed in
+  /// order, so that the figures do not depend on the thread count. With a robust loss the
+  /// target is judged on the loss's error, as during the evolution. Nothing for no distances.
+  void judge_leaf(Patch& leaf, const std::vector<double>& distance) const {
     if (distance.empty()) return;
-    // Summed in subcloud order, so that the figures do not depend on the thread count. With a
-    // robust loss the target is judged on the loss's error, as during the evolution.
     const bool robust = refinement_.enabled && refinement_.loss != LossKind::None;
     double sum = 0.0, max = 0.0, loss_sum = 0.0;
     for (double d : distance) {
@@ -327,6 +332,18 @@ class Driver {
     leaf.max_distance = max;
     leaf.error = robust ? loss_sum / count : leaf.mean_distance;
     leaf.accurate = leaf.error <= result_.accuracy;
+  }
+
+  /// The last-resort repair (fold_repair.hpp); the refitted leaves are judged again on the
+  /// points they parameterize, at the distances of their new surfaces.
+  void repair() {
+    const Repair repair = repair_far_points(result_, points_, threads_);
+    result_.repaired_points = repair.repaired;
+    if (repair.refitted.empty()) return;
+    std::vector<std::vector<double>> distances(result_.patches.size());
+    for (std::size_t i = 0; i < points_.size(); ++i)
+      if (result_.patch[i] >= 0) distances[static_cast<std::size_t>(result_.patch[i])].push_back(result_.distance[i]);
+    for (int id : repair.refitted) judge_leaf(result_.patches[static_cast<std::size_t>(id)], distances[static_cast<std::size_t>(id)]);
   }
 
   /// The second part of A2: points whose best foot is clamped try the leaves across.

@@ -29,7 +29,7 @@ static const struct option_row kOptions[] = {
     {DBS_OPT_SUBCLOUD_NEAR, "subcloud_near", 0, 0.25, 0.0, 10.0, 0, -0.5, 10.5},
     {DBS_OPT_SUBCLOUD_OWN, "subcloud_own", 0, 0.05, 0.0, 10.0, 1, -1e-9, 10.5},
     {DBS_OPT_NOISE_FLOOR, "noise_floor", 1, 1, 0.0, 1.0, 1, -1, 2},
-    {DBS_OPT_REPAIR, "repair", 1, 0, 0.0, 1.0, 1, -1, 2},
+    {DBS_OPT_REPAIR, "repair", 1, 1, 0.0, 1.0, 1, -1, 2}, /* on by default since 0.4 */
     {DBS_OPT_LOSS, "loss", 1, DBS_LOSS_NONE, 0.0, 3.0, 1, -1, 4},
     {DBS_OPT_LOSS_SCALE, "loss_scale", 0, 0.0, 0.0, DBL_MAX, 1, -1e-12, NAN},
     {DBS_OPT_CERES_MAX_ITERATIONS, "ceres_max_iterations", 1, 25, 1, 1000, 1, 0, 1001},

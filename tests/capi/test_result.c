@@ -119,7 +119,7 @@ static void statistics(void **state) {
   assert_true(result_stat(f->result, DBS_STAT_COINCIDENT_POINTS) == 0.0);
   assert_true(result_stat(f->result, DBS_STAT_UNDECIDED_POINTS) <= 0.1 * NPOINTS);
   assert_true(result_stat(f->result, DBS_STAT_JUDGED_POINTS) == NPOINTS); /* a small cloud: every point */
-  assert_true(result_stat(f->result, DBS_STAT_REPAIRED_POINTS) == 0);     /* the repair is off by default */
+  assert_true(result_stat(f->result, DBS_STAT_REPAIRED_POINTS) == 0);     /* on by default, but a smooth cloud the surface reaches needs none */
   {
     int32_t repaired[NPOINTS];
     assert_ok(dbs_result_repaired(f->result, repaired, NPOINTS));
