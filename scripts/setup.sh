@@ -12,17 +12,23 @@ build="$repo/build"
 packages=(
   build-essential cmake pkg-config ccache gfortran python3 binutils
   libeigen3-dev libnanoflann-dev libceres-dev libdraco-dev
-  libcmocka-dev libqhull-dev libpng-dev
+  libcmocka-dev libqhull-dev libpng-dev locales
 )
 
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
 if dpkg -s "${packages[@]}" >/dev/null 2>&1; then
   echo "setup: all ${#packages[@]} Debian packages are installed"
 else
-  sudo=""
-  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
   echo "setup: installing ${packages[*]}"
   $sudo env DEBIAN_FRONTEND=noninteractive apt-get update
   $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${packages[@]}"
+fi
+# A locale with a decimal comma, for the test that libdbs writes numbers the same under it
+# (tests/capi/test_locale.c); only this one is compiled.
+if ! locale -a 2>/dev/null | grep -qix 'de_DE.utf8'; then
+  echo "setup: compiling the de_DE.UTF-8 locale"
+  $sudo localedef -i de_DE -f UTF-8 de_DE.UTF-8
 fi
 
 launcher=()

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "error.hpp"
+#include "number_text.hpp"
 
 namespace dbs {
 
@@ -43,11 +44,7 @@ bool parse_number(std::string_view token, double& out) {
   return ec == std::errc();
 }
 
-void append_number(std::string& out, double x) {
-  char buf[32];
-  const auto end = std::to_chars(buf, buf + sizeof buf, x).ptr;
-  out.append(buf, end);
-}
+void append_number(std::string& out, double x) { append_shortest(out, x); }
 
 void append_integer(std::string& out, long long x) {
   char buf[24];

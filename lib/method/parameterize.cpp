@@ -5,9 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <locale>
 #include <numeric>
-#include <sstream>
 #include <string>
 
 #include "cloud_index.hpp"
@@ -17,6 +15,7 @@
 #include "fold_measure.hpp"
 #include "fold_repair.hpp"
 #include "noise_estimate.hpp"
+#include "number_text.hpp"
 #include "parallel.hpp"
 #include "progress.hpp"
 #include "subcloud.hpp"
@@ -54,12 +53,7 @@ constexpr std::size_t kMinPointsToSubdivide = 64;
 using Clock = std::chrono::steady_clock;
 
 /// A number for a message, whatever the host's locale.
-std::string format_number(double x) {
-  std::ostringstream out;
-  out.imbue(std::locale::classic());
-  out << x;
-  return out.str();
-}
+std::string format_number(double x) { return significant_text(x, 6); }
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "error.hpp"
+#include "number_text.hpp"
 
 namespace dbs {
 namespace {
@@ -72,9 +73,7 @@ void JsonWriter::number(const char* key, double value) {
     text_ += "null";
     return;
   }
-  char digits[32];
-  std::snprintf(digits, sizeof digits, "%.10g", value);
-  text_ += digits;
+  append_shortest(text_, value);  // round-trips exactly, in any locale
 }
 
 void JsonWriter::integer(const char* key, long long value) {

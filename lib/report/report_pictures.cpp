@@ -7,6 +7,7 @@
 
 #include "bitmap_font.hpp"
 #include "error.hpp"
+#include "number_text.hpp"
 
 namespace dbs {
 namespace {
@@ -17,11 +18,7 @@ constexpr Rgb kFolded = {230, 0, 200};
 constexpr Rgb kSuspicious = {0, 0, 0};
 constexpr Rgb kDegenerate = {150, 150, 150};
 
-std::string format(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return text;
-}
+std::string format(double value) { return significant_text(value, 3); }
 
 // Calls paint(x, y) for every pixel whose centre lies in the triangle (pixel coordinates);
 // for a triangle that holds no pixel centre, for the pixel of its centroid.

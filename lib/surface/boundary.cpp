@@ -6,6 +6,7 @@
 
 #include "coons_patch.hpp"
 #include "error.hpp"
+#include "number_text.hpp"
 
 namespace dbs {
 
@@ -13,16 +14,9 @@ namespace {
 
 constexpr Side kSides[4] = {Side::Bottom, Side::Right, Side::Top, Side::Left};
 
-// %g, without the exponent's leading zero: 1e-6, not 1e-06.
+// 6 significant digits, without the exponent's leading zero: 1e-6, not 1e-06.
 std::string format_number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  std::string s = buf;
-  for (const char* e : {"e-0", "e+0"}) {
-    const std::size_t at = s.find(e);
-    if (at != std::string::npos && at + 3 < s.size()) s.erase(at + 2, 1);
-  }
-  return s;
+  return significant_text(x, 6);
 }
 
 std::string format_point(const Vec3& p) {
