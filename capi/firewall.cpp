@@ -1,6 +1,7 @@
 #include "firewall.hpp"
 
 #include <new>
+#include <stdexcept>
 
 #include "error.hpp"
 
@@ -61,6 +62,10 @@ int status_of_current_exception(const char* function) noexcept {
   } catch (const std::bad_alloc&) {
     record(function, "", "out of memory");
     return DBS_ERR_NO_MEMORY;
+  } catch (const std::length_error&) {
+    // A container asked for more elements than it can ever hold: a count no memory holds.
+    record(function, "", "out of memory (a size beyond what can be allocated)");
+    return DBS_ERR_NO_MEMORY;
   } catch (const std::exception& e) {
     record(function, "internal error: ", e.what());
     return DBS_ERR_INTERNAL;
@@ -82,6 +87,11 @@ void require_capacity(const char* name, std::size_t capacity, std::size_t needed
 void require_index(const char* what, long long value, std::size_t count) {
   if (value < 0 || static_cast<unsigned long long>(value) >= count)
     fail_status(DBS_ERR_OUT_OF_RANGE, std::string(what) + " " + std::to_string(value) + " is outside its range [0, " + std::to_string(count) + ")");
+}
+
+void require_size_index(const char* what, std::size_t value, std::size_t count) {
+  // A size_t index is printed as the unsigned number it is (SIZE_MAX, not -1).
+  if (value >= count) fail_status(DBS_ERR_OUT_OF_RANGE, std::string(what) + " " + std::to_string(value) + " is outside its range [0, " + std::to_string(count) + ")");
 }
 
 }  // namespace dbs::capi

@@ -42,5 +42,7 @@ void require_capacity(const char* name, std::size_t capacity, std::size_t needed
 
 /// DBS_ERR_OUT_OF_RANGE unless 0 <= value < count; the message names `what` and the range.
 void require_index(const char* what, long long value, std::size_t count);
+/// The same for a size_t index (printed unsigned).
+void require_size_index(const char* what, std::size_t value, std::size_t count);
 
 }  // namespace dbs::capi

@@ -9,7 +9,7 @@ namespace {
 /// The i-th patch of the view, after the NULL and range checks.
 const dbs::Patch& patch_at(const dbs_patches* patches, size_t i) {
   require_non_null(patches, "patches");
-  require_index("patch index", static_cast<long long>(i), patches->patches.size());
+  require_size_index("patch index", i, patches->patches.size());
   return *patches->patches[i];
 }
 

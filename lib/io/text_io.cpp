@@ -111,8 +111,21 @@ std::string file_line(const std::string& path, std::size_t line) { return path +
 
 std::string excerpt(std::string_view text) {
   constexpr std::size_t kMax = 40;
-  if (text.size() <= kMax) return std::string(text);
-  return std::string(text.substr(0, kMax)) + "...";
+  const std::string_view shown = text.substr(0, kMax);
+  // Control bytes are written as \xNN: a NUL would end the C string of the message there.
+  std::string out;
+  for (char c : shown) {
+    const unsigned char b = static_cast<unsigned char>(c);
+    if (b < 0x20 && c != '\t') {
+      static const char kHex[] = "0123456789abcdef";
+      out += "\\x";
+      out += kHex[b >> 4];
+      out += kHex[b & 15];
+    } else {
+      out += c;
+    }
+  }
+  return text.size() <= kMax ? out : out + "...";
 }
 
 ContentLines::ContentLines(std::string_view text) : rest_(text) {

@@ -47,7 +47,8 @@ void append_integer(std::string& out, long long x);
 /// "PATH:LINE" for error messages.
 std::string file_line(const std::string& path, std::size_t line);
 
-/// A short quotable excerpt of a line (long lines are cut, with "...").
+/// A short quotable excerpt of a line (long lines are cut, with "..."; control bytes as \xNN,
+/// so that a NUL in a file cannot end the message early).
 std::string excerpt(std::string_view text);
 
 /// The lines of a text that hold something: each with its '#' comment removed and its

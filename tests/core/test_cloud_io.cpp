@@ -122,6 +122,9 @@ void xyz_rejects_malformed_truncated_nonfinite_and_empty(void**) {
 
   const std::string glued = write_tmp("cloud_io_glued.xyz", "1 2 3\n4 5 6.5x\n");
   expect_error([&] { dbs::read_xyz_text(glued); }, ErrorCode::Parse, {glued + ":2:", "'6.5x'"});
+  // A NUL byte in the file is shown, not allowed to end the message (a C string) there.
+  const std::string nul = write_tmp("cloud_io_nul.xyz", std::string("1 2 3\n4 5 a\0b\n", 15));
+  expect_error([&] { dbs::read_xyz_text(nul); }, ErrorCode::Parse, {nul + ":2:", "'a\\x00b'"});
 
   const std::string empty_field = write_tmp("cloud_io_empty_field.xyz", "1,,2,3\n");
   expect_error([&] { dbs::read_xyz_text(empty_field); }, ErrorCode::Parse, {empty_field + ":1:", "found ','"});
