@@ -1,7 +1,6 @@
 #include "firewall.hpp"
 
 #include <new>
-#include <stdexcept>
 
 #include "error.hpp"
 
@@ -61,10 +60,6 @@ int status_of_current_exception(const char* function) noexcept {
     return status_of(e.code());
   } catch (const std::bad_alloc&) {
     record(function, "", "out of memory");
-    return DBS_ERR_NO_MEMORY;
-  } catch (const std::length_error&) {
-    // A container asked for more elements than it can ever hold: a count no memory holds.
-    record(function, "", "out of memory (a size beyond what can be allocated)");
     return DBS_ERR_NO_MEMORY;
   } catch (const std::exception& e) {
     record(function, "internal error: ", e.what());

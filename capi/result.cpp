@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "firewall.hpp"
+#include "number_text.hpp"
 #include "result_io.hpp"
 
 using namespace dbs::capi;
@@ -18,8 +19,8 @@ void copy_values(const std::vector<From>& values, To* out, size_t capacity, cons
 
 /// A parameter of dbs_result_evaluate: finite and inside [0,1].
 void require_unit(const char* name, double value) {
-  if (!std::isfinite(value)) fail_status(DBS_ERR_NON_FINITE, std::string("parameter ") + name + " is not finite (" + std::to_string(value) + ")");
-  if (value < 0.0 || value > 1.0) fail_status(DBS_ERR_OUT_OF_RANGE, std::string("parameter ") + name + " = " + std::to_string(value) + " is outside [0, 1]");
+  if (!std::isfinite(value)) fail_status(DBS_ERR_NON_FINITE, std::string("parameter ") + name + " is not finite (" + dbs::significant_text(value, 6) + ")");
+  if (value < 0.0 || value > 1.0) fail_status(DBS_ERR_OUT_OF_RANGE, std::string("parameter ") + name + " = " + dbs::significant_text(value, 6) + " is outside [0, 1]");
 }
 
 double stat_value(const dbs::Result& r, int32_t stat) {

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <string>
 
+#include "number_text.hpp"
 #include "validation_handles.hpp"
 
 using namespace dbs::capi;
@@ -11,7 +12,7 @@ int dbs_distances_create(const dbs_result* result, double tolerance, dbs_distanc
     require_non_null(result, "result");
     require_non_null(out, "out");
     if (!std::isfinite(tolerance)) fail_status(DBS_ERR_NON_FINITE, "tolerance is not finite");
-    if (tolerance < 0.0) fail_status(DBS_ERR_OUT_OF_RANGE, "tolerance " + std::to_string(tolerance) + " is negative (0 = the result's accuracy target)");
+    if (tolerance < 0.0) fail_status(DBS_ERR_OUT_OF_RANGE, "tolerance " + dbs::significant_text(tolerance, 6) + " is negative (0 = the result's accuracy target)");
     const dbs::Result& r = result->result;
     const double used = tolerance > 0.0 ? tolerance : r.accuracy;
     *out = new dbs_distances{dbs::distance_statistics(r.distance, r.patch, r.patches.size(), used)};

@@ -64,8 +64,12 @@ int dbs_distortion_create(const dbs_result* result, const dbs_cloud* cloud, cons
     if (n_triangles > 0) require_non_null(triangles, "triangles");
     require_non_null(out, "out");
     const dbs::DomainScaling s = scaling_of(scaling);
-    if (n_triangles > std::numeric_limits<size_t>::max() / (3 * sizeof(int32_t))) fail_status(DBS_ERR_INVALID_ARGUMENT, "triangle count " + std::to_string(n_triangles) + " exceeds any addressable array");
-    std::vector<dbs::Triangle> list(n_triangles);
+    std::vector<dbs::Triangle> list;
+    // A count no array can have, of the caller's triangles or of ours (it was an internal error
+    // between the two bounds before 0.4).
+    if (n_triangles > std::numeric_limits<size_t>::max() / (3 * sizeof(int32_t)) || n_triangles > list.max_size())
+      fail_status(DBS_ERR_INVALID_ARGUMENT, "triangle count " + std::to_string(n_triangles) + " exceeds any addressable array");
+    list.resize(n_triangles);
     for (size_t t = 0; t < n_triangles; ++t) list[t] = {triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]};
     *out = new dbs_distortion{dbs::measure_result_distortion(result->result, cloud->cloud, list, s, kAllThreads)};
   });

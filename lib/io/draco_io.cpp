@@ -55,7 +55,8 @@ void check_claimed_count(const std::string& bytes, const std::string& path) {
   if (encoder_type != 0 || (flags & kMetadataFlag)) return;
   std::uint32_t count = 0;
   for (int i = 3; i >= 0; --i) count = (count << 8) | static_cast<unsigned char>(bytes[kCountOffset + static_cast<std::size_t>(i)]);
-  if (static_cast<std::uint64_t>(count) > kMaxPointsPerByte * bytes.size())
+  // Draco stores the count as a signed 32-bit integer: above INT32_MAX it is negative.
+  if (count > 0x7fffffffu || static_cast<std::uint64_t>(count) > kMaxPointsPerByte * bytes.size())
     fail(ErrorCode::Parse, path + ": the Draco header claims " + std::to_string(count) + " points, more than a file of " + std::to_string(bytes.size()) + " bytes can hold (at most " +
                                std::to_string(kMaxPointsPerByte) + " per byte)");
 }

@@ -32,8 +32,6 @@ void for_each_vertex_line(std::string_view obj, Fn fn) {
 
 std::vector<Vec3> read_obj_vertices(std::string_view obj, const std::string& path) {
   std::vector<Vec3> points;
-  // an "v x y z" line holds 8 bytes or more: one reservation instead of growing step by step
-  points.reserve(obj.size() / 8 + 1);
   for_each_vertex_line(obj, [&](std::size_t k, std::size_t line, std::string_view fields) {
     Vec3 p;
     const XyzFields parsed = parse_xyz_fields(fields, p);
@@ -46,7 +44,6 @@ std::vector<Vec3> read_obj_vertices(std::string_view obj, const std::string& pat
     return true;
   });
   if (points.empty()) fail(ErrorCode::Empty, path + ": no points (the OBJ file has no 'v' lines)");
-  points.shrink_to_fit();
   return points;
 }
 

@@ -147,8 +147,9 @@ Header parse_header(std::string_view bytes, const std::string& path) {
   if (second != h.elements.end()) header_error(path, second->header_line, "a second 'vertex' element (the first is on line " + std::to_string(vertex->header_line + 1) + ")");
   h.vertex = static_cast<std::size_t>(vertex - h.elements.begin());
   for (const char* axis : {"x", "y", "z"}) {
-    const auto p = std::find_if(vertex->properties.begin(), vertex->properties.end(), [axis](const Property& q) { return q.name == axis; });
-    if (p == vertex->properties.end() || p->is_list)
+    // the same rule as property_index(): the first scalar property of that name
+    const auto p = std::find_if(vertex->properties.begin(), vertex->properties.end(), [axis](const Property& q) { return q.name == axis && !q.is_list; });
+    if (p == vertex->properties.end())
       header_error(path, vertex->header_line, std::string("the vertex element has no scalar '") + axis + "' property");
   }
   if (vertex->count == 0) fail(ErrorCode::Empty, path + ": no points (the PLY file declares 0 vertices)");
@@ -212,16 +213,19 @@ std::vector<Vec3> read_binary(std::string& bytes, const Header& h, const std::st
   };
   const Element& vertex = h.elements[h.vertex];
   const std::size_t axis[3] = {property_index(vertex, "x"), property_index(vertex, "y"), property_index(vertex, "z")};
-  // Each vertex takes at least one byte per coordinate: a count the file cannot hold is
-  // refused before anything is allocated for it.
-  if (static_cast<std::uint64_t>(vertex.count) > bytes.size() - h.data_begin)
-    fail(ErrorCode::Parse, path + ": the header declares " + std::to_string(vertex.count) + " vertices, more than the file's " + std::to_string(bytes.size() - h.data_begin) + " bytes of data can hold (truncated file?)");
-  std::vector<Vec3> points(static_cast<std::size_t>(vertex.count));
+  // Each vertex takes at least the bytes of its scalars and list counts: memory is reserved
+  // for no more vertices than the file's data can hold, whatever the header claims (a
+  // truncated or lying file fails at the vertex where its data ends).
+  std::uint64_t vertex_bytes = 0;
+  for (const Property& q : vertex.properties) vertex_bytes += static_cast<std::uint64_t>(q.is_list ? q.count_type.bytes : q.type.bytes);
+  std::vector<Vec3> points;
+  points.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(static_cast<std::uint64_t>(vertex.count), (bytes.size() - h.data_begin) / vertex_bytes)));
   for (std::size_t ei = 0; ei <= h.vertex; ++ei) {
     const Element& e = h.elements[ei];
     if (e.properties.empty()) continue;
     const bool is_vertex = ei == h.vertex;
     for (std::int64_t k = 0; k < e.count; ++k) {
+      Vec3 point = Vec3::Zero();
       for (std::size_t pi = 0; pi < e.properties.size(); ++pi) {
         const Property& p = e.properties[pi];
         std::int64_t values = 1;
@@ -236,10 +240,11 @@ std::vector<Vec3> read_binary(std::string& bytes, const Header& h, const std::st
           for (std::int64_t i = 0; i < values; ++i) std::reverse(v + i * p.type.bytes, v + (i + 1) * p.type.bytes);
         if (is_vertex)
           for (int a = 0; a < 3; ++a)
-            if (pi == axis[a]) points[static_cast<std::size_t>(k)][a] = scalar_value(v, p.type);
+            if (pi == axis[a]) point[a] = scalar_value(v, p.type);
       }
-      if (is_vertex && !is_finite(points[static_cast<std::size_t>(k)]))
-        fail(ErrorCode::NonFinite, path + ": vertex " + std::to_string(k) + " has a non-finite coordinate");
+      if (!is_vertex) continue;
+      if (!is_finite(point)) fail(ErrorCode::NonFinite, path + ": vertex " + std::to_string(k) + " has a non-finite coordinate");
+      points.push_back(point);
     }
   }
   return points;
@@ -308,11 +313,11 @@ std::size_t value_index(const Element& e, const std::vector<std::string_view>& v
 std::vector<Vec3> read_ascii(std::string_view bytes, const Header& h, const std::string& path) {
   const Element& vertex = h.elements[h.vertex];
   const std::size_t axis[3] = {property_index(vertex, "x"), property_index(vertex, "y"), property_index(vertex, "z")};
-  // An ASCII vertex takes at least 6 bytes ("0 0 0\n"): a count the file cannot hold is
-  // refused before anything is allocated for it.
-  if (static_cast<std::uint64_t>(vertex.count) > (bytes.size() - h.data_begin) / 6 + 1)
-    fail(ErrorCode::Parse, path + ": the header declares " + std::to_string(vertex.count) + " vertices, more than the file's " + std::to_string(bytes.size() - h.data_begin) + " bytes of data can hold (truncated file?)");
-  std::vector<Vec3> points(static_cast<std::size_t>(vertex.count));
+  // An ASCII vertex takes at least 6 bytes ("0 0 0\n"): memory is reserved for no more
+  // vertices than the file's data can hold (a truncated or lying file fails at the line
+  // where its data ends).
+  std::vector<Vec3> points;
+  points.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(static_cast<std::uint64_t>(vertex.count), (bytes.size() - h.data_begin) / 6 + 1)));
   walk_ascii(bytes, h, path, [&](const Element& e, std::int64_t k, std::size_t line, const std::vector<std::string_view>& values) {
     const std::int64_t expected = expected_values(e, values);
     if (expected < 0) fail(ErrorCode::Parse, file_line(path, line) + ": " + entry_name(e, k) + " has a list length that is not a count");
@@ -323,9 +328,10 @@ std::vector<Vec3> read_ascii(std::string_view bytes, const Header& h, const std:
       if (!parse_number(v, x)) fail(ErrorCode::Parse, file_line(path, line) + ": " + entry_name(e, k) + ": '" + excerpt(v) + "' is not a number");
     }
     if (&e == &vertex) {
-      Vec3& p = points[static_cast<std::size_t>(k)];
+      Vec3 p;
       for (int a = 0; a < 3; ++a) parse_number(values[value_index(e, values, axis[a])], p[a]);
       if (!is_finite(p)) fail(ErrorCode::NonFinite, file_line(path, line) + ": vertex " + std::to_string(k) + " has a non-finite coordinate");
+      points.push_back(p);
     }
     return true;
   });

@@ -1,6 +1,7 @@
 #include "text_io.hpp"
 
 #include <cctype>
+#include <cmath>
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
@@ -35,10 +36,30 @@ bool parse_number(std::string_view token, double& out) {
   if (*first == '+' && token.size() > 1 && first[1] != '-' && first[1] != '+') ++first;
   const auto [end, ec] = std::from_chars(first, last, out);
   if (end != last) return false;
-  // from_chars leaves values beyond the double range unset; strtod gives them their IEEE
-  // meaning (overflow -> +-inf, underflow -> 0 or a subnormal)
+  // from_chars leaves values beyond the double range unset: they get their IEEE meaning
+  // (overflow -> +-inf, underflow -> +-0), decided from the decimal exponent (strtod would
+  // follow the host's locale: under a comma locale "1.5e400" reads as 1).
   if (ec == std::errc::result_out_of_range) {
-    out = std::strtod(std::string(token).c_str(), nullptr);
+    const std::string_view text(first, static_cast<std::size_t>(last - first));
+    const std::size_t e = text.find_first_of("eE");
+    const std::string_view mantissa = text.substr(0, e);
+    long exponent = 0;
+    if (e != std::string_view::npos) {
+      const char* x = text.data() + e + 1;
+      if (x < last && *x == '+') ++x;
+      if (std::from_chars(x, last, exponent).ec != std::errc()) exponent = *x == '-' ? -100000 : 100000;  // beyond long
+    }
+    // the decimal exponent D of the value (in [10^D, 10^(D+1))): the exponent plus that of
+    // the mantissa's first non-zero digit; out of range, D > 0 is an overflow, D < 0 an underflow
+    const bool negative = !mantissa.empty() && mantissa.front() == '-';
+    const std::size_t point = mantissa.find('.');
+    const std::size_t nonzero = mantissa.find_first_of("123456789");
+    long magnitude = exponent;
+    if (nonzero != std::string_view::npos) {
+      if (point == std::string_view::npos || nonzero < point) magnitude += static_cast<long>((point == std::string_view::npos ? mantissa.size() : point) - nonzero) - 1;
+      else magnitude -= static_cast<long>(nonzero - point);
+    }
+    out = magnitude > 0 ? (negative ? -HUGE_VAL : HUGE_VAL) : (negative ? -0.0 : 0.0);
     return true;
   }
   return ec == std::errc();

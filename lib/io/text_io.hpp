@@ -68,7 +68,8 @@ class ContentLines {
 };
 
 /// Parses a whole token as a number (a leading '+' allowed). Non-finite spellings (nan,
-/// inf) are numbers; values beyond the double range become +-inf or 0 as with strtod.
+/// inf) are numbers; values beyond the double range become +-inf or +-0 as with strtod in
+/// the C locale, whatever the host's locale.
 bool parse_number(std::string_view token, double& out);
 
 /// Outcome of reading three coordinates from the start of a line.

@@ -54,13 +54,14 @@ Vec2 step_towards_foot(const Result& result, const Vec3& q, const Vec2& start, d
 /// drawn towards where they are by a Tikhonov term of kRefitRegularization times the mean
 /// diagonal of the normal matrix, so that nodes with little data stay. The surface is its
 /// boundary's Coons patch plus a spline displacement linear in the grid's interior values,
-/// so the fit is one small dense solve; the boundary, hence every seam, is unchanged.
-void refit_leaf(Patch& leaf, const std::vector<std::size_t>& ids, const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v) {
+/// so the fit is one small dense solve; the boundary, hence every seam, is unchanged. False
+/// (the leaf untouched) when the grid is too large, no data reaches it or the solve fails.
+bool refit_leaf(Patch& leaf, const std::vector<std::size_t>& ids, const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v) {
   const Grid& grid = leaf.grid;
   const int nu = grid.nu, nv = grid.nv;
-  if (nu < 3 || nv < 3 || ids.empty()) return;
+  if (nu < 3 || nv < 3 || ids.empty()) return false;
   const int mi = nu - 2, mj = nv - 2, m = mi * mj;
-  if (m > kMaxRefitNodes) return;  // a dense m x m system beyond this costs more than it is worth
+  if (m > kMaxRefitNodes) return false;  // a dense m x m system beyond this costs more than it is worth
   const BaseSurface coons(leaf.surface.boundary());
   // The spline is a tensor product of linear 1D interpolations, so the displacement of a
   // unit value at node (i,j) is phi_i(s) psi_j(t), both cardinal (1 at their own site, 0 at
@@ -77,28 +78,37 @@ void refit_leaf(Patch& leaf, const std::vector<std::size_t>& ids, const std::vec
     unit(1, j) = Vec3(1.0, 0.0, 0.0);
     psi.emplace_back(unit);
   }
-  // The normal equations, accumulated point by point (no n x m matrix: a leaf may hold
-  // most of a large cloud).
+  // The normal equations, accumulated over blocks of kRefitBlock points (no n x m matrix: a
+  // leaf may hold most of a large cloud; a block is one rank-k update).
+  constexpr int kRefitBlock = 128;
   Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(m, m), rhs = Eigen::MatrixXd::Zero(m, 3), g0(m, 3);
-  Eigen::VectorXd a(m), ph(mi), ps(mj);
+  Eigen::MatrixXd rows(m, kRefitBlock), residual(kRefitBlock, 3);
+  Eigen::VectorXd ph(mi), ps(mj);
+  int filled = 0;
+  auto flush = [&] {
+    normal.selfadjointView<Eigen::Lower>().rankUpdate(rows.leftCols(filled));
+    rhs.noalias() += rows.leftCols(filled) * residual.topRows(filled);
+    filled = 0;
+  };
   for (std::size_t k = 0; k < ids.size(); ++k) {
     const Vec2 st = leaf.rect.to_local(u[ids[k]], v[ids[k]]).cwiseMax(0.0).cwiseMin(1.0);
     for (int i = 0; i < mi; ++i) ph[i] = phi[static_cast<std::size_t>(i)].eval(st.x(), grid.v(1)).x();
     for (int j = 0; j < mj; ++j) ps[j] = psi[static_cast<std::size_t>(j)].eval(grid.u(1), st.y()).x();
-    for (int c = 0; c < m; ++c) a[c] = ph[c % mi] * ps[c / mi];
-    normal.selfadjointView<Eigen::Lower>().rankUpdate(a);
-    rhs.noalias() += a * (points[ids[k]] - coons.eval(st.x(), st.y())).transpose();
+    for (int c = 0; c < m; ++c) rows(c, filled) = ph[c % mi] * ps[c / mi];
+    residual.row(filled) = (points[ids[k]] - coons.eval(st.x(), st.y())).transpose();
+    if (++filled == kRefitBlock) flush();
   }
+  if (filled > 0) flush();
   for (int c = 0; c < m; ++c) {
     const int i = 1 + c % mi, j = 1 + c / mi;
     g0.row(c) = (grid(i, j) - coons.eval(grid.u(i), grid.v(j))).transpose();
   }
   const double lambda = kRefitRegularization * normal.diagonal().mean();
-  if (!(lambda > 0.0)) return;  // no data reaches a node
+  if (!(lambda > 0.0)) return false;  // no data reaches a node
   normal.diagonal().array() += lambda;
   // LDLT reads the lower triangle, the one accumulated.
   const Eigen::MatrixXd g = normal.ldlt().solve(rhs + lambda * g0);
-  if (!g.allFinite()) return;
+  if (!g.allFinite()) return false;
   Grid fitted = grid;
   for (int c = 0; c < m; ++c) {
     const int i = 1 + c % mi, j = 1 + c / mi;
@@ -106,6 +116,7 @@ void refit_leaf(Patch& leaf, const std::vector<std::size_t>& ids, const std::vec
   }
   leaf.surface = BaseSurface(leaf.surface.boundary(), fitted);
   leaf.grid = std::move(fitted);
+  return true;
 }
 
 double median(std::vector<double> values) {
@@ -130,10 +141,6 @@ bool isolated(const CloudIndex& index, const std::vector<Vec3>& points, std::siz
   return d2.size() < needed + 1 || d2.back() > r * r;
 }
 
-/// Refits every leaf holding a repaired point (refit_leaf) to the (u,v) of its points that
-/// are not isolated far points, and recomputes the distance of every point of those leaves
-/// at its (u,v). A refit that raises the median distance of the leaf's points is undone.
-/// Returns the ids of the leaves refitted, in increasing order.
 /// The trust radius of point i's step towards its foot: kRepairTrust times the mean (u,v)
 /// distance to its nearest points in 3D (`neighbours`), so that a step cannot carry it past
 /// them (0 without neighbours).
@@ -145,6 +152,10 @@ double trust_radius(const Result& result, std::size_t i, const std::vector<std::
   return kRepairTrust * spread / static_cast<double>(neighbours.size());
 }
 
+/// Refits every leaf holding a repaired point (refit_leaf) to the (u,v) of its points that
+/// are not isolated far points, and recomputes the distance of every point of those leaves
+/// at its (u,v). A refit that raises the median distance of the leaf's points is undone.
+/// Returns the ids of the leaves refitted, in increasing order.
 std::vector<int> refit_repaired_leaves(Result& result, const std::vector<Vec3>& points, const std::vector<char>& outlier, int threads) {
   std::vector<std::vector<std::size_t>> data(result.patches.size()), members(result.patches.size());
   std::vector<char> touched(result.patches.size(), 0);
@@ -166,7 +177,7 @@ std::vector<int> refit_repaired_leaves(Result& result, const std::vector<Vec3>& 
     for (std::size_t i : members[id]) before.push_back((result.evaluate(result.u[i], result.v[i]) - points[i]).norm());
     const BaseSurface old_surface = leaf.surface;
     const Grid old_grid = leaf.grid;
-    refit_leaf(leaf, data[id], points, result.u, result.v);
+    if (!refit_leaf(leaf, data[id], points, result.u, result.v)) return;  // not refitted: its repaired points go back
     for (std::size_t i : members[id]) after.push_back((result.evaluate(result.u[i], result.v[i]) - points[i]).norm());
     // A fit that would move the surface away from most of the leaf's points is not kept.
     if (median(after) > median(before)) {

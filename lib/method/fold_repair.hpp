@@ -32,7 +32,7 @@ constexpr double kRepairTrust = 0.25;          ///< step towards the foot: at mo
 constexpr double kIsolationSpacings = 3.0;      ///< a far point's neighbourhood: at least this many spacings h ...
 constexpr double kIsolationShare = 0.25;        ///< ... isolated when it holds less than this share of a sheet's points
 constexpr double kRefitRegularization = 1e-2;   ///< Tikhonov weight of the refit, times the mean diagonal of its normal matrix
-constexpr int kMaxRefitNodes = 1024;            ///< leaves with more interior grid nodes (a grid above 34 x 34) are not refitted
+constexpr int kMaxRefitNodes = 441;             ///< leaves with more interior grid nodes (a grid above 23 x 23) are not refitted (the fit costs m^2 per point)
 
 /// What repair_far_points did.
 struct Repair {

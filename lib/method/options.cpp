@@ -1,12 +1,14 @@
 #include "options.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <string>
+#include <system_error>
 
 #include "curve_refinement.hpp"
 #include "error.hpp"
+#include "number_text.hpp"
 
 namespace dbs {
 namespace {
@@ -45,14 +47,14 @@ const OptionSpec& spec(int id) {
   return kSpecs[id];
 }
 
-/// Text that reads back as the same double, as short as %g allows ("0.25", "1e-09", "10").
+/// Text that reads back as the same double, as short as %g allows ("0.25", "1e-9", "10"),
+/// whatever the host's locale.
 std::string number(double x) {
-  std::ostringstream out;
   for (int digits = 6;; ++digits) {
-    out.str("");
-    out.precision(digits);
-    out << x;
-    if (digits >= 17 || !std::isfinite(x) || std::stod(out.str()) == x) return out.str();
+    const std::string text = significant_text(x, digits);
+    double back = 0.0;
+    const auto parsed = std::from_chars(text.data(), text.data() + text.size(), back);
+    if (digits >= 17 || !std::isfinite(x) || (parsed.ec == std::errc() && back == x)) return text;
   }
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "error.hpp"
+#include "number_text.hpp"
 
 namespace dbs {
 
@@ -66,7 +67,7 @@ void check_input(const CurveProjectionInput& input, double gamma) {
     fail(ErrorCode::InvalidArgument, "project_curve: " + std::to_string(input.directions.size()) + " directions for " + std::to_string(k) + " nodes");
   for (std::size_t f : input.fixed)
     if (f >= k) fail(ErrorCode::OutOfRange, "project_curve: fixed node " + std::to_string(f) + " is not below the node count " + std::to_string(k));
-  if (!(gamma >= 0.0 && gamma <= 1.0)) fail(ErrorCode::OutOfRange, "project_curve: gamma = " + std::to_string(gamma) + " is outside [0, 1]");
+  if (!(gamma >= 0.0 && gamma <= 1.0)) fail(ErrorCode::OutOfRange, "project_curve: gamma = " + significant_text(gamma, 6) + " is outside [0, 1]");
   for (std::size_t i = 0; i < k; ++i)
     if (!is_finite(input.nodes[i]) || !is_finite(input.directions[i])) fail(ErrorCode::NonFinite, "project_curve: node " + std::to_string(i) + " or its direction is not finite");
 }
@@ -125,7 +126,7 @@ CurveProjectionInput densify_polygon(const std::vector<Vec3>& points, const std:
   if (m < 2) fail(ErrorCode::InvalidArgument, "densify_polygon: " + std::to_string(m) + " points, at least 2 needed");
   if (directions.size() != m)
     fail(ErrorCode::InvalidArgument, "densify_polygon: " + std::to_string(directions.size()) + " directions for " + std::to_string(m) + " points");
-  if (!(spacing > 0.0) || !std::isfinite(spacing)) fail(ErrorCode::InvalidArgument, "densify_polygon: spacing = " + std::to_string(spacing) + " must be positive and finite");
+  if (!(spacing > 0.0) || !std::isfinite(spacing)) fail(ErrorCode::InvalidArgument, "densify_polygon: spacing = " + significant_text(spacing, 6) + " must be positive and finite");
   if (max_nodes_per_segment < 1) fail(ErrorCode::InvalidArgument, "densify_polygon: max_nodes_per_segment must be at least 1");
   for (std::size_t i = 0; i < m; ++i) {
     if (!is_finite(points[i]) || !is_finite(directions[i])) fail(ErrorCode::NonFinite, "densify_polygon: point " + std::to_string(i) + " or its direction is not finite");

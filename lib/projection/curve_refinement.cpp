@@ -7,6 +7,7 @@
 #include <string>
 
 #include "error.hpp"
+#include "number_text.hpp"
 
 #if DBS_HAVE_CERES
 #include <ceres/ceres.h>
@@ -26,7 +27,7 @@ void check_refinement(const CurveProjectionInput& input, double gamma, const std
   if (start.size() != k) fail(ErrorCode::InvalidArgument, "refine_curve: " + std::to_string(start.size()) + " start offsets for " + std::to_string(k) + " nodes");
   for (std::size_t f : input.fixed)
     if (f >= k) fail(ErrorCode::OutOfRange, "refine_curve: fixed node " + std::to_string(f) + " is not below the node count " + std::to_string(k));
-  if (!(gamma >= 0.0 && gamma <= 1.0)) fail(ErrorCode::OutOfRange, "refine_curve: gamma = " + std::to_string(gamma) + " is outside [0, 1]");
+  if (!(gamma >= 0.0 && gamma <= 1.0)) fail(ErrorCode::OutOfRange, "refine_curve: gamma = " + significant_text(gamma, 6) + " is outside [0, 1]");
   for (std::size_t i = 0; i < k; ++i)
     if (!is_finite(input.nodes[i]) || !is_finite(input.directions[i]) || !std::isfinite(start[i]))
       fail(ErrorCode::NonFinite, "refine_curve: node " + std::to_string(i) + ", its direction or its start offset is not finite");

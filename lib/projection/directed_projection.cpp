@@ -6,6 +6,7 @@
 #include <string>
 
 #include "error.hpp"
+#include "number_text.hpp"
 
 namespace dbs {
 
@@ -54,7 +55,7 @@ Vec3 unit_direction(const Vec3& p, const Vec3& n) {
 }  // namespace
 
 DirectedProjector::DirectedProjector(const CloudIndex& index, double h) : index_(&index), h_(h) {
-  if (!(h > 0.0) || !std::isfinite(h)) fail(ErrorCode::InvalidArgument, "DirectedProjector: length scale h = " + std::to_string(h) + " must be positive and finite");
+  if (!(h > 0.0) || !std::isfinite(h)) fail(ErrorCode::InvalidArgument, "DirectedProjector: length scale h = " + significant_text(h, 6) + " must be positive and finite");
 }
 
 RayMoments DirectedProjector::moments(const Vec3& p, const Vec3& n) const {

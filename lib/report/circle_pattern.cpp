@@ -5,6 +5,7 @@
 #include <string>
 
 #include "error.hpp"
+#include "number_text.hpp"
 
 namespace dbs {
 namespace {
@@ -14,7 +15,7 @@ constexpr double kDiskRadius = 0.3;  // in periods
 }  // namespace
 
 CirclePattern::CirclePattern(double scale_u, double scale_v, int across) : scale_u_(scale_u), scale_v_(scale_v) {
-  if (!(scale_u > 0.0) || !(scale_v > 0.0) || !std::isfinite(scale_u) || !std::isfinite(scale_v)) fail(ErrorCode::InvalidArgument, "circle pattern: domain scales " + std::to_string(scale_u) + ", " + std::to_string(scale_v) + " must be positive and finite");
+  if (!(scale_u > 0.0) || !(scale_v > 0.0) || !std::isfinite(scale_u) || !std::isfinite(scale_v)) fail(ErrorCode::InvalidArgument, "circle pattern: domain scales " + significant_text(scale_u, 6) + ", " + significant_text(scale_v, 6) + " must be positive and finite");
   if (across < 1) fail(ErrorCode::OutOfRange, "circle pattern: " + std::to_string(across) + " disks across (at least 1)");
   period_ = std::max(scale_u, scale_v) / across;
 }

@@ -194,7 +194,7 @@ RgbImage draw_distance_histogram(const std::vector<double>& distances, const Dis
 
   draw_text(image, left, 6, "DISTANCE TO THE BASE SURFACE", kInk);
   char line[160];
-  std::snprintf(line, sizeof line, "%.1f%% OF %zu POINTS WITHIN %s (GREEN)  MEAN %s (ORANGE)  P95 %s  MAX %s", 100.0 * stats.within, stats.count, format(tolerance).c_str(), format(stats.mean).c_str(), format(stats.p95).c_str(), format(stats.max).c_str());
+  std::snprintf(line, sizeof line, "%s%% OF %zu POINTS WITHIN %s (GREEN)  MEAN %s (ORANGE)  P95 %s  MAX %s", significant_text(100.0 * stats.within, 3).c_str(), stats.count, format(tolerance).c_str(), format(stats.mean).c_str(), format(stats.p95).c_str(), format(stats.max).c_str());
   draw_text(image, left, 22, line, kInk);
   draw_text(image, left + plot_w - text_width("DISTANCE"), height - 10, "DISTANCE", kInk);
   return image;

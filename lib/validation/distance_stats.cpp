@@ -5,6 +5,7 @@
 #include <string>
 
 #include "error.hpp"
+#include "number_text.hpp"
 #include "summary_stats.hpp"
 
 namespace dbs {
@@ -38,7 +39,7 @@ DistanceStats stats_of(std::vector<double> values, double tolerance) {
 DistanceReport distance_statistics(const std::vector<double>& distances, const std::vector<std::int32_t>& patch, std::size_t patch_count, double tolerance) {
   if (distances.size() != patch.size()) fail(ErrorCode::InvalidArgument, "distance_statistics: " + std::to_string(distances.size()) + " distances but " + std::to_string(patch.size()) + " patch ids");
   if (!std::isfinite(tolerance)) fail(ErrorCode::NonFinite, "distance_statistics: the tolerance is not finite");
-  if (tolerance < 0.0) fail(ErrorCode::OutOfRange, "distance_statistics: tolerance " + std::to_string(tolerance) + " is negative");
+  if (tolerance < 0.0) fail(ErrorCode::OutOfRange, "distance_statistics: tolerance " + significant_text(tolerance, 6) + " is negative");
   std::vector<std::vector<double>> grouped(patch_count);
   for (std::size_t i = 0; i < distances.size(); ++i) {
     if (!std::isfinite(distances[i])) fail(ErrorCode::NonFinite, "distance_statistics: distance of point " + std::to_string(i) + " is not finite");

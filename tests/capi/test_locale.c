@@ -68,6 +68,11 @@ static void numbers_keep_their_point_under_a_comma_locale(void **state) {
   dbs_boundary *loaded = NULL;
   assert_ok(dbs_boundary_load(boundary_path, &loaded));
   dbs_boundary_destroy(loaded);
+  /* A number beyond the double range is infinite, refused: read through strtod under this
+   * locale, "1.5e400" would have been 1. */
+  temp_file(cloud_path, sizeof cloud_path, "locale_overflow.xyz", "0.5 0.25 0.125\n1.5e400 0.25 0.125\n");
+  dbs_cloud *refused = NULL;
+  assert_failure(dbs_cloud_load(cloud_path, &refused), DBS_ERR_NON_FINITE, "dbs_cloud_load", "locale_overflow.xyz:2");
 
   /* Writing: the result .csv, the report's summary.json and meshes. */
   cloud = bump_cloud(30, 0.1);
@@ -103,8 +108,11 @@ static void numbers_keep_their_point_under_a_comma_locale(void **state) {
     assert_true(vertex_lines > 100 && with_point > vertex_lines / 2);
     free(obj);
   }
-  /* Error messages: a number in one keeps its point too. */
-  assert_failure(dbs_options_set_double(options, DBS_OPT_SMOOTHING, 1.5), DBS_ERR_OUT_OF_RANGE, "dbs_options_set_double", NULL);
+  /* Error messages: a number in one keeps its point too (std::to_string would write 1,500000). */
+  assert_failure(dbs_options_set_double(options, DBS_OPT_SMOOTHING, 1.5), DBS_ERR_OUT_OF_RANGE, "dbs_options_set_double", "1.5");
+  assert_false(has_decimal_comma(dbs_last_error_message()));
+  double point[3];
+  assert_failure(dbs_result_evaluate(result, 1.5, 0.25, point, NULL), DBS_ERR_OUT_OF_RANGE, "dbs_result_evaluate", "= 1.5 is outside [0, 1]");
   assert_false(has_decimal_comma(dbs_last_error_message()));
 
   dbs_result_destroy(result);

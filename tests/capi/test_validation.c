@@ -223,10 +223,10 @@ static void test_caller_mesh(void **state) {
   assert_true(distortion_stat(d, DBS_DISTORTION_TRIANGLES) == 0.0);
   assert_true(distortion_summary(d, DBS_MEASURE_CONFORMAL, DBS_SUMMARY_MAX) == 0.0);
   dbs_distortion_destroy(d);
-  /* a triangle count no memory can hold: out of memory, not an internal error (it was
+  /* a triangle count no array can have: refused, not an internal error (it was
    * DBS_ERR_INTERNAL before 0.4), and nothing is read from the array */
   d = UNTOUCHED_DISTORTION;
-  assert_failure(dbs_distortion_create(f->plane_result, f->plane, triangles, SIZE_MAX / 12, DBS_SCALING_UNIFORM, &d), DBS_ERR_NO_MEMORY, "dbs_distortion_create", "out of memory");
+  assert_failure(dbs_distortion_create(f->plane_result, f->plane, triangles, SIZE_MAX / 12, DBS_SCALING_UNIFORM, &d), DBS_ERR_INVALID_ARGUMENT, "dbs_distortion_create", "exceeds any addressable array");
   assert_ptr_equal(d, UNTOUCHED_DISTORTION);
   free(triangles);
 }
