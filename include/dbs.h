@@ -495,7 +495,9 @@ DBS_API int dbs_patches_boundary_points(const dbs_patches *patches, size_t i, in
 /** Points of the patch's subcloud (a count), their mean and max distance to the patch
  *  (cloud units), grid evolutions (a count). Since 0.4 the distances of a leaf are over all
  *  of its points, those of a patch that was split over the evenly strided sample (4096 to
- *  8191 of its points, all of them when fewer) that decided its growth and its split.
+ *  8191 of its points, all of them when fewer) that decided its growth and its split;
+ *  since 0.4 the distances of a leaf the repair refitted (DBS_OPT_REPAIR) are over the
+ *  points it parameterizes, at their (u,v) on its refitted surface.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE. \since 0.1 */
 DBS_API int dbs_patches_stats(const dbs_patches *patches, size_t i, size_t *out_points, double *out_mean, double *out_max, int32_t *out_iterations);
 /** The solver that projected the patch's grids (DBS_SOLVER_*: DBS_SOLVER_CERES when the run
