@@ -11,7 +11,7 @@
 // points of dist(S(u_i,v_i), noise-free surface); wall time of dbs_parameterize; then the same
 // reference folds and time for the meshless reference.
 //
-// usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--solver linear|ceres] [--save DIR]
+// usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--solver linear|ceres] [--density F] [--save DIR]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -33,7 +33,7 @@ using dbs_folds::FoldCount;
 using dbs_folds::FoldShape;
 
 [[noreturn]] void usage_error(const std::string& message) {
-  std::fprintf(stderr, "dbs-bench-folds: %s\nusage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--solver linear|ceres] [--save DIR]\nshapes:", message.c_str());
+  std::fprintf(stderr, "dbs-bench-folds: %s\nusage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--solver linear|ceres] [--density F] [--save DIR]\nshapes:", message.c_str());
   for (const std::string& name : dbs_folds::fold_shape_names()) std::fprintf(stderr, " %s", name.c_str());
   std::fprintf(stderr, "\n");
   std::exit(2);
@@ -48,6 +48,7 @@ struct Settings {
   int repair = -1;     // -1: the library's default (DBS_OPT_REPAIR)
   int solver = -1;     // -1: the library's default (DBS_OPT_SOLVER)
   std::string save_dir;  // non-empty: each shape's cloud and boundary are written there
+  double density = 1.0;  // points as a multiple of each shape's usual 4,000 or so
 };
 
 Settings parse_arguments(int argc, char** argv) {
@@ -75,6 +76,10 @@ Settings parse_arguments(int argc, char** argv) {
       settings.max_level = parse_int(arg, value);
     } else if (arg == "--repair") {
       settings.repair = parse_int(arg, value);
+    } else if (arg == "--density") {
+      char* end = nullptr;
+      settings.density = std::strtod(value.c_str(), &end);
+      if (end == value.c_str() || *end != '\0' || !(settings.density > 0.0 && settings.density <= 1000.0)) usage_error("--density: '" + value + "' is not a number in (0, 1000]");
     } else if (arg == "--save") {
       settings.save_dir = value;
     } else if (arg == "--solver") {
@@ -216,7 +221,7 @@ int main(int argc, char** argv) {
   std::fflush(stdout);
   int failures = 0;
   for (const std::string& name : settings.shapes) {
-    const FoldShape shape = dbs_folds::fold_shape(name);
+    const FoldShape shape = dbs_folds::fold_shape(name, settings.density);
     if (!settings.save_dir.empty() && !save_shape(shape, settings.save_dir)) {
       std::fprintf(stderr, "dbs-bench-folds: cannot write %s into %s\n", shape.name.c_str(), settings.save_dir.c_str());
       return EXIT_FAILURE;

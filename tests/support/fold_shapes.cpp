@@ -158,8 +158,16 @@ double smallest_angle(const Point3& p, const Point3& q, const Point3& r) {
   return smallest;
 }
 
+/// Points of the shapes built on this thread, as a multiple of their usual count (each side of
+/// the jittered grid scaled by its square root); set only by fold_shape(name, density).
+thread_local double shape_density = 1.0;
+
 FoldShape build(std::string name, std::string description, SurfaceFunction surface, std::size_t grid_a, std::size_t grid_b, double relative_noise,
                 std::uint64_t seed) {
+  if (shape_density != 1.0) {
+    grid_a = static_cast<std::size_t>(std::lround(static_cast<double>(grid_a) * std::sqrt(shape_density)));
+    grid_b = static_cast<std::size_t>(std::lround(static_cast<double>(grid_b) * std::sqrt(shape_density)));
+  }
   FoldShape shape;
   shape.name = std::move(name);
   shape.description = std::move(description);
@@ -351,6 +359,15 @@ FoldShape sphere_cap(double relative_noise) {
 
 std::vector<std::string> fold_shape_names() {
   return {"saddle", "saddle-noisy", "rippled", "rippled-noisy", "mushroom", "tall-dome", "fingers", "open-box", "cone", "sphere-cap"};
+}
+
+FoldShape fold_shape(const std::string& name, double density) {
+  if (!(density > 0.0) || density > 1000.0) throw std::invalid_argument("fold_shape: density " + std::to_string(density) + " is outside (0, 1000]");
+  struct Restore {
+    ~Restore() { shape_density = 1.0; }
+  } restore;
+  shape_density = density;
+  return fold_shape(name);
 }
 
 FoldShape fold_shape(const std::string& name) {

@@ -85,6 +85,9 @@ constexpr double kRippleAmplitude = 0.012;
 std::vector<FoldShape> all_fold_shapes();
 /// One shape of all_fold_shapes() by name; throws std::invalid_argument for an unknown name.
 FoldShape fold_shape(const std::string& name);
+/// The same with `density` times the points (each side of its jittered grid scaled by the
+/// square root; in (0, 1000]), for measuring how the method scales.
+FoldShape fold_shape(const std::string& name, double density);
 /// The names all_fold_shapes() uses, in its order.
 std::vector<std::string> fold_shape_names();
 
