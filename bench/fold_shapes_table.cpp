@@ -114,14 +114,16 @@ struct Run {
   std::string reference_free = "n/a";  // the library's own fold measure, points (share)
 };
 
-/// Writes the shape as DIR/NAME.xyz and DIR/NAME_boundary.txt (docs/FORMATS.md), so that
-/// dbs-param can run on it (--report pictures); false when a file cannot be written.
+/// Writes the shape as DIR/NAME.xyz (with the true parameters as two further columns, which
+/// readers ignore) and DIR/NAME_boundary.txt (docs/FORMATS.md), so that dbs-param can run on
+/// it (--report pictures) and a script can score it; false when a file cannot be written.
 bool save_shape(const FoldShape& shape, const std::string& dir) {
   const std::string cloud_path = dir + "/" + shape.name + ".xyz", boundary_path = dir + "/" + shape.name + "_boundary.txt";
   std::FILE* cloud = std::fopen(cloud_path.c_str(), "w");
   if (!cloud) return false;
-  std::fprintf(cloud, "# %s: %s\n", shape.name.c_str(), shape.description.c_str());
-  for (std::size_t i = 0; i + 2 < shape.xyz.size(); i += 3) std::fprintf(cloud, "%.17g %.17g %.17g\n", shape.xyz[i], shape.xyz[i + 1], shape.xyz[i + 2]);
+  std::fprintf(cloud, "# %s: %s\n# x y z, then the true parameters a b (ignored by dbs-param); point i + %zu j is node (i, j) of the jittered grid\n", shape.name.c_str(), shape.description.c_str(), shape.grid_a);
+  for (std::size_t k = 0; k < shape.count(); ++k)
+    std::fprintf(cloud, "%.17g %.17g %.17g %.17g %.17g\n", shape.xyz[3 * k], shape.xyz[3 * k + 1], shape.xyz[3 * k + 2], shape.uv_true[2 * k], shape.uv_true[2 * k + 1]);
   const bool cloud_ok = std::fclose(cloud) == 0;
   std::FILE* boundary = std::fopen(boundary_path.c_str(), "w");
   if (!boundary) return false;
