@@ -34,6 +34,14 @@ int dbs_boundary_load(const char* path, dbs_boundary** out) {
   });
 }
 
+int dbs_boundary_save(const dbs_boundary* boundary, const char* path) {
+  return guarded(__func__, [&] {
+    require_non_null(boundary, "boundary");
+    require_non_null(path, "path");
+    dbs::save_boundary(boundary->boundary, path);
+  });
+}
+
 void dbs_boundary_destroy(dbs_boundary* boundary) { delete boundary; }
 
 int dbs_boundary_side_count(const dbs_boundary* boundary, int32_t side, size_t* out) {

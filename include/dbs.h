@@ -248,6 +248,13 @@ DBS_API int dbs_boundary_create(const double *bottom, size_t n_bottom, const dou
  *  DBS_ERR_EMPTY (no section at all), DBS_ERR_DEGENERATE, DBS_ERR_OUT_OF_RANGE (as
  *  dbs_boundary_create), DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_boundary_load(const char *path, dbs_boundary **out);
+/** Writes the boundary to `path` in the boundary file format (docs/FORMATS.md), its corners
+ *  as dbs_boundary_create or dbs_boundary_load made them coincide, every number as the
+ *  shortest text that reads back to the same double: dbs_boundary_load of the file gives
+ *  the same sides bit for bit. An existing file is replaced.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_IO (the file cannot be written, named in the
+ *  message), DBS_ERR_NO_MEMORY. \since 0.4 */
+DBS_API int dbs_boundary_save(const dbs_boundary *boundary, const char *path);
 /** Frees the boundary; NULL is ignored. Not while another call uses it. \since 0.1 */
 DBS_API void dbs_boundary_destroy(dbs_boundary *boundary);
 /** Number of points of one side (DBS_SIDE_*).

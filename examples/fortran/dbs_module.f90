@@ -151,6 +151,12 @@ module dbs
       type(c_ptr), intent(out) :: out
       integer(c_int) :: dbs_boundary_load
     end function
+    function dbs_boundary_save(boundary, path) bind(C, name="dbs_boundary_save")
+      import :: c_int, c_char, c_ptr
+      type(c_ptr), value :: boundary
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int) :: dbs_boundary_save
+    end function
     subroutine dbs_boundary_destroy(boundary) bind(C, name="dbs_boundary_destroy")
       import :: c_ptr
       type(c_ptr), value :: boundary

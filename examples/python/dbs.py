@@ -177,6 +177,7 @@ PROTOTYPES = {
     "dbs_cloud_points": (_int, [_ptr, _P(_dbl), _size]),
     "dbs_boundary_create": (_int, [_P(_dbl), _size, _P(_dbl), _size, _P(_dbl), _size, _P(_dbl), _size, _P(_ptr)]),
     "dbs_boundary_load": (_int, [_str, _P(_ptr)]),
+    "dbs_boundary_save": (_int, [_ptr, _str]),
     "dbs_boundary_destroy": (None, [_ptr]),
     "dbs_boundary_side_count": (_int, [_ptr, _i32, _P(_size)]),
     "dbs_boundary_side_points": (_int, [_ptr, _i32, _P(_dbl), _size]),
@@ -360,6 +361,10 @@ class Boundary(_Handle):
         handle = _ptr()
         _check(lib.dbs_boundary_load(os.fsencode(path), ctypes.byref(handle)))
         return cls(handle)
+
+    def save(self, path):
+        """Writes the boundary file; Boundary.load(path) gives the same sides bit for bit."""
+        _check(lib.dbs_boundary_save(self._handle, os.fsencode(path)))
 
     def side(self, side):
         count = _size()

@@ -75,4 +75,23 @@ Boundary load_boundary(const std::string& path) {
   }
 }
 
+void save_boundary(const Boundary& boundary, const std::string& path) {
+  OutputFile file(path);
+  file.write("# libdbs boundary: the sections bottom, right, top, left (docs/FORMATS.md)\n");
+  std::string line;
+  for (const Side s : kSides) {
+    file.write(std::string(side_name(s)) + "\n");
+    for (const Vec3& p : boundary.side(s).points()) {
+      line.clear();
+      for (int c = 0; c < 3; ++c) {
+        if (c > 0) line += ' ';
+        append_number(line, p[c]);
+      }
+      line += '\n';
+      file.write(line);
+    }
+  }
+  file.close();
+}
+
 }  // namespace dbs

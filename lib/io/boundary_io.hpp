@@ -1,4 +1,4 @@
-// Reading boundary files (FORMATS.md): sections bottom/right/top/left, one point per line.
+// Reading and writing boundary files (FORMATS.md): sections bottom/right/top/left, one point per line.
 #pragma once
 #include <string>
 
@@ -10,5 +10,11 @@ namespace dbs {
 /// section given twice or missing, a malformed or non-finite coordinate, fewer than 2
 /// points; geometric problems as Boundary's constructor reports them.
 Boundary load_boundary(const std::string& path);
+
+/// Writes `boundary` in the boundary file format (FORMATS.md): a comment line, then the
+/// sections bottom, right, top, left, each point as the shortest text that reads back to the
+/// same double, so that load_boundary gives the same sides bit for bit. Error(Io) when the
+/// file cannot be written.
+void save_boundary(const Boundary& boundary, const std::string& path);
 
 }  // namespace dbs

@@ -1,6 +1,7 @@
 /* dbs_boundary_*: creation from four polylines, validation, loading, read-back. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "capi_support.h"
@@ -135,6 +136,56 @@ static void load_errors_name_file_and_line(void **state) {
   assert_load_error(LOAD_BOUNDARY, "no_such_boundary.txt", NULL, 0, DBS_ERR_IO, NULL);
 }
 
+/* Every side of `a` equals that of `b`, bit for bit. */
+static void assert_same_sides(const dbs_boundary *a, const dbs_boundary *b) {
+  for (int32_t side = 0; side < 4; ++side) {
+    size_t na = 0, nb = 0;
+    assert_ok(dbs_boundary_side_count(a, side, &na));
+    assert_ok(dbs_boundary_side_count(b, side, &nb));
+    assert_int_equal(na, nb);
+    double *pa = malloc(3 * na * sizeof(double)), *pb = malloc(3 * nb * sizeof(double));
+    assert_ok(dbs_boundary_side_points(a, side, pa, na));
+    assert_ok(dbs_boundary_side_points(b, side, pb, nb));
+    assert_memory_equal(pa, pb, 3 * na * sizeof(double));
+    free(pa);
+    free(pb);
+  }
+}
+
+static void save_reads_back_bit_for_bit(void **state) {
+  (void)state;
+  /* Awkward numbers (no short decimal, large and tiny magnitudes, negative zero) and corners
+   * made to coincide at their midpoint: what is saved is what the handle holds. */
+  const double bottom[] = {0.1, 1.0 / 3.0, -0.0, 40.000000000000007, 1e-300, 2.5e7, 100.0 + 1e-13, 0, 0};
+  const double right[] = {100, 1e-5, 0, 100, 50, 0};
+  const double top[] = {0, 50, 0, 100, 50, 0};
+  const double left[] = {0.1, 1.0 / 3.0, -0.0, 0, 50, 0};
+  dbs_boundary *boundary = NULL, *back = NULL;
+  assert_ok(dbs_boundary_create(bottom, 3, right, 2, top, 2, left, 2, &boundary));
+  char path[512];
+  temp_path(path, sizeof path, "saved_boundary.txt");
+  assert_ok(dbs_boundary_save(boundary, path));
+  assert_ok(dbs_boundary_load(path, &back));
+  assert_same_sides(boundary, back);
+  /* saved again, the file is the same */
+  char again[512];
+  temp_path(again, sizeof again, "saved_again.txt");
+  assert_ok(dbs_boundary_save(back, again));
+  size_t n1 = 0, n2 = 0;
+  char *t1 = read_all(path, &n1), *t2 = read_all(again, &n2);
+  assert_int_equal(n1, n2);
+  assert_memory_equal(t1, t2, n1);
+  assert_non_null(strstr(t1, "\nbottom\n0.1 0.3333333333333333 -0\n"));
+  free(t1);
+  free(t2);
+  /* a file that cannot be written, named; NULLs */
+  assert_failure(dbs_boundary_save(boundary, "/nonexistent-directory/b.txt"), DBS_ERR_IO, "dbs_boundary_save", "/nonexistent-directory/b.txt");
+  assert_failure(dbs_boundary_save(NULL, path), DBS_ERR_NULL_ARGUMENT, "dbs_boundary_save", "boundary");
+  assert_failure(dbs_boundary_save(boundary, NULL), DBS_ERR_NULL_ARGUMENT, "dbs_boundary_save", "path");
+  dbs_boundary_destroy(back);
+  dbs_boundary_destroy(boundary);
+}
+
 static void destroy_accepts_null(void **state) {
   (void)state;
   dbs_boundary_destroy(NULL);
@@ -149,6 +200,7 @@ int main(void) {
       cmocka_unit_test(side_ids_and_buffers_are_checked),
       cmocka_unit_test(load_reads_sections_in_any_order),
       cmocka_unit_test(load_errors_name_file_and_line),
+      cmocka_unit_test(save_reads_back_bit_for_bit),
       cmocka_unit_test(destroy_accepts_null),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
