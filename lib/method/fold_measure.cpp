@@ -32,6 +32,7 @@ struct Local {
   bool surface_like = false;   // takes part in the orientation graph
   std::int8_t sign = 0;        // sign(det J) against `normal`; 0 = undecided
   bool collapsed = false;      // undecided because its neighbourhood is squeezed in (u,v)
+  bool scrambled = false;      // undecided because no linear map explains its neighbours' (u,v)
   double abs_det = 0.0;        // |det J| when sign != 0
   double stretch = 0.0;        // median |(du,dv)| / |dp| over the neighbours; 0 = unknown
 };
@@ -186,7 +187,10 @@ Local analyse(const std::vector<Vec3>& points, const std::vector<double>& u, con
     const double ru = q.du - (j11 * x + j12 * y), rv = q.dv - (j21 * x + j22 * y);
     residual += ru * ru + rv * rv;
   }
-  if (residual > kMaxResidual * total) return out;
+  if (residual > kMaxResidual * total) {
+    out.scrambled = true;
+    return out;
+  }
   const double det = j11 * j22 - j12 * j21;
   const double frob2 = j11 * j11 + j12 * j12 + j21 * j21 + j22 * j22;
   const double s_max = std::sqrt(0.5 * (frob2 + std::sqrt(std::max(0.0, frob2 * frob2 - 4.0 * det * det))));
@@ -411,7 +415,7 @@ FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<dou
     const int sign = local[i].sign * orientation[i];
     const std::int64_t b = sign == 0 ? 0 : balance[component[i]];
     if (sign == 0 || b == 0) {
-      m.state[i] = local[i].collapsed ? kFoldCollapsed : kFoldUndecided;
+      m.state[i] = local[i].collapsed ? kFoldCollapsed : local[i].scrambled ? kFoldScrambled : kFoldUndecided;
       ++m.undecided;
       if (local[i].collapsed) ++m.collapsed;
     } else if ((sign > 0) == (b > 0)) {
@@ -424,6 +428,26 @@ FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<dou
   const std::size_t decided = n - m.undecided;
   m.folded_share = decided == 0 ? 0.0 : static_cast<double>(m.folded) / static_cast<double>(decided);
   return m;
+}
+
+std::vector<std::int8_t> spread_verdicts(const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter) {
+  if (judged.size() != state.size() || judged.empty())
+    fail(ErrorCode::InvalidArgument, "spread_verdicts: " + std::to_string(judged.size()) + " judged points but " + std::to_string(state.size()) + " verdicts");
+  const std::size_t n = points.size();
+  std::vector<std::size_t> slot(n, 0);
+  for (std::size_t k = 0; k < judged.size(); ++k) {
+    if (judged[k] >= n) fail(ErrorCode::InvalidArgument, "spread_verdicts: judged point " + std::to_string(judged[k]) + " is not one of the " + std::to_string(n) + " points");
+    slot[judged[k]] = k;
+  }
+  const CloudIndex index(points, judged);
+  std::vector<std::int8_t> out(n);
+  auto body = [&](std::size_t i) {
+    out[i] = state[slot[index.nearest(points[i])]];
+    if (meter) meter->add();
+  };
+  if (meter) meter->run(n, threads, body);
+  else parallel_for(n, threads, body);
+  return out;
 }
 
 }  // namespace dbs

@@ -68,7 +68,10 @@ constexpr double kCoincident = 1e-12;            ///< (u,v) tolerance of count_c
 /// (smallest singular value below 1e-3 of the largest) or |det J| is below 1e-3 of the
 /// median; the points a surface never reached pile up like that (collapses, which keep
 /// their orientation and so cannot be told folded).
-enum : std::int8_t { kFoldOk = 1, kFoldUndecided = 0, kFolded = -1, kFoldCollapsed = -2 };
+/// kFoldScrambled: undecided because no linear map explains the (u,v) of the neighbourhood
+/// (J explains less than half of them): its points are shuffled in (u,v), as where a
+/// surface pleated below the scale of its grid meets the cloud.
+enum : std::int8_t { kFoldOk = 1, kFoldUndecided = 0, kFolded = -1, kFoldCollapsed = -2, kFoldScrambled = -3 };
 
 struct FoldMeasure {
   std::size_t points = 0;      ///< number of points judged
@@ -77,7 +80,7 @@ struct FoldMeasure {
   std::size_t coincident = 0;  ///< points sharing one (u,v) with another point (see count_coincident)
   std::size_t collapsed = 0;   ///< undecided points whose neighbourhood is squeezed (kFoldCollapsed), part of `undecided`
   double folded_share = 0.0;   ///< folded / (points - undecided); 0 when no point is decided
-  std::vector<std::int8_t> state;  ///< per point: kFoldOk (+1), kFolded (-1), kFoldUndecided (0), kFoldCollapsed (-2)
+  std::vector<std::int8_t> state;  ///< per point: kFoldOk (+1), kFolded (-1), kFoldUndecided (0), kFoldCollapsed (-2), kFoldScrambled (-3)
 };
 
 /// Judges the parameterization (u[i], v[i]) of points[i]. noise_sigma >= 0 is the cloud's noise
@@ -85,6 +88,11 @@ struct FoldMeasure {
 /// Throws Error(InvalidArgument) when the sizes differ or noise_sigma < 0, Error(NonFinite) for
 /// a non-finite point, parameter or sigma. Fewer than 4 distinct points: all undecided.
 FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, double noise_sigma, int threads, WorkMeter* meter = nullptr);
+
+/// The verdicts of measure_folds on the points `judged` (indices into `points`, distinct,
+/// `state` one per judged point) spread over every point: each takes the verdict of the
+/// nearest judged point (ties: the lower index). Deterministic for any thread count.
+std::vector<std::int8_t> spread_verdicts(const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter = nullptr);
 
 /// Number of points i for which some j != i has |u_i - u_j| <= 1e-12 and |v_i - v_j| <= 1e-12
 /// (exact duplicates included). O(N log N). Throws Error(InvalidArgument) when the sizes differ.

@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 
 #include "cloud_index.hpp"
+#include "fold_measure.hpp"
 #include "parallel.hpp"
 #include "spline_displacement.hpp"
 
@@ -196,22 +197,79 @@ std::vector<int> refit_repaired_leaves(Result& result, const std::vector<Vec3>& 
   return refitted;
 }
 
+/// Whether points[i] lies at the border of the cloud: the centroid of its kRepairNeighbours
+/// nearest points is offset from it by more than kBorderOffset times their mean distance (a
+/// point inside a sheet has neighbours all around). A fill from one side would pull it inwards.
+bool at_cloud_border(const CloudIndex& index, const std::vector<Vec3>& points, std::size_t i) {
+  std::vector<std::size_t> ids;
+  std::vector<double> d2;
+  index.knn(points[i], kRepairNeighbours + 1, ids, d2);
+  Vec3 offset = Vec3::Zero();
+  double spread = 0.0;
+  for (std::size_t m : ids) {
+    offset += points[m] - points[i];
+    spread += (points[m] - points[i]).norm();
+  }
+  return offset.norm() > kBorderOffset * spread;
+}
+
+/// The suspect points of fold_state (see repair_folds) besides `far`: 1 for a point to
+/// repair.
+std::vector<char> suspect_points(const CloudIndex& index, const std::vector<Vec3>& points, const std::vector<std::int8_t>& fold_state, const std::vector<char>& far, int threads) {
+  const std::size_t n = points.size();
+  std::vector<char> doubtful(n, 0), suspect(n, 0);
+  for (std::size_t i = 0; i < n; ++i) doubtful[i] = far[i] || (i < fold_state.size() && fold_state[i] != kFoldOk);
+  if (fold_state.empty()) return suspect;
+  parallel_for(n, threads, [&](std::size_t i) {
+    const std::int8_t state = fold_state[i];
+    if (far[i] || state == kFoldOk) return;
+    if (state == kFolded || state == kFoldCollapsed) {
+      suspect[i] = 1;
+      return;
+    }
+    // Undecided: repaired where no linear map explains its neighbours' (u,v) (scrambled), or
+    // inside a region of doubtful points (a sign not significant there is one the fill can
+    // set right), never at the cloud's border (where a fill from one side pulls it inwards);
+    // a sign not significant in a region that is otherwise sound is left as it is.
+    std::vector<std::size_t> ids;
+    std::vector<double> d2;
+    index.knn(points[i], kRepairNeighbours + 1, ids, d2);
+    std::size_t others = 0;
+    for (std::size_t m : ids) others += (m != i && doubtful[m]) ? 1 : 0;
+    if (state != kFoldScrambled && static_cast<double>(others) < kSuspectClusterShare * static_cast<double>(ids.size() - 1)) return;
+    suspect[i] = at_cloud_border(index, points, i) ? 0 : 1;
+  });
+  return suspect;
+}
+
 }  // namespace
 
-Repair repair_far_points(Result& result, const std::vector<Vec3>& points, int threads) {
+Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::vector<std::int8_t>& fold_state, int threads) {
   const std::size_t n = points.size();
   result.repaired.assign(n, 0);
+  std::vector<char> is_far(n, 0);
+  bool any_far = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    is_far[i] = result.distance[i] > kRepairFactor * result.accuracy && result.distance[i] > kRepairSpacings * result.length_scale;
+    any_far = any_far || is_far[i];
+  }
+  bool any_doubt = false;
+  for (std::int8_t state : fold_state) any_doubt = any_doubt || state != kFoldOk;
+  if (!any_far && !any_doubt) return {};
+  const CloudIndex index(points);
+  const std::vector<char> suspect = suspect_points(index, points, fold_state, is_far, threads);
   std::vector<std::size_t> far;
   for (std::size_t i = 0; i < n; ++i)
-    if (result.distance[i] > kRepairFactor * result.accuracy && result.distance[i] > kRepairSpacings * result.length_scale) far.push_back(i);
+    if (is_far[i] || suspect[i]) far.push_back(i);
   if (far.empty() || far.size() == n) return {};  // nothing to repair, or nothing to repair from
 
   // Gross outliers are left where they are and out of the refit: a harmonic fill would give
   // them the (u,v) of the surface under them anyway, and a fit through them would pull the
   // surface off the clean points.
-  const CloudIndex index(points);
   std::vector<char> outlier(n, 0);
-  parallel_for(far.size(), threads, [&](std::size_t f) { outlier[far[f]] = isolated(index, points, far[f], result.distance[far[f]], result.length_scale) ? 1 : 0; });
+  parallel_for(far.size(), threads, [&](std::size_t f) {
+    if (is_far[far[f]]) outlier[far[f]] = isolated(index, points, far[f], result.distance[far[f]], result.length_scale) ? 1 : 0;
+  });
   far.erase(std::remove_if(far.begin(), far.end(), [&](std::size_t i) { return outlier[i] != 0; }), far.end());
   if (far.empty()) return {};
 

@@ -109,21 +109,33 @@ class Driver {
     }
     const auto parameterize_start = Clock::now();
     project_across_borders();
-    result_.repaired.assign(points_.size(), 0);
-    if (options_.repair) repair();
-    summarize();
     result_.stage_seconds.parameterize += seconds_since(parameterize_start);
+    // The fold measure judges the result; with the repair on it judges it first for the
+    // repair, and again only when the repair moved a point.
     const double levels_end = level_progress_end(result_.levels - 1);
     begin_stage("folds", levels_end + (1.0 - levels_end) * kFoldsShare, 1.0, std::min(points_.size(), kFoldJudgedPoints));
-    const auto folds_start = Clock::now();
-    const FoldMeasure folds = judge_folds();
+    auto folds_start = Clock::now();
+    std::vector<std::size_t> judged;
+    FoldMeasure folds = judge_folds(judged);
+    result_.stage_seconds.folds = seconds_since(folds_start);
+    result_.repaired.assign(points_.size(), 0);
+    if (options_.repair) {
+      const auto repair_start = Clock::now();
+      const bool moved = repair(judged, folds);
+      result_.stage_seconds.parameterize += seconds_since(repair_start);
+      if (moved) {
+        folds_start = Clock::now();
+        folds = judge_folds(judged);
+        result_.stage_seconds.folds += seconds_since(folds_start);
+      }
+    }
+    summarize();
     result_.judged_points = folds.points;
     result_.folded_points = folds.folded;
     result_.undecided_points = folds.undecided;
     result_.collapsed_points = folds.collapsed;
     result_.coincident_points = folds.coincident;
     result_.folded_share = folds.folded_share;
-    result_.stage_seconds.folds = seconds_since(folds_start);
     result_.seconds = seconds_since(start);
     report(1.0, "done");
     return std::move(result_);
@@ -259,13 +271,15 @@ class Driver {
   /// The fold measure of the result on at most kFoldJudgedPoints points, evenly strided over
   /// the input order (a sparser cloud of the same surface: the measure sizes its
   /// neighbourhoods from the spacing), so that it costs a bounded share of a large run.
-  FoldMeasure judge_folds() {
+  FoldMeasure judge_folds(std::vector<std::size_t>& judged) {
     const std::size_t n = points_.size();
+    judged.clear();
     if (n <= kFoldJudgedPoints) return measure_folds(points_, result_.u, result_.v, result_.noise, threads_, &meter_);
     std::vector<Vec3> points;
     std::vector<double> u, v;
     for (std::size_t k = 0; k < kFoldJudgedPoints; ++k) {
       const std::size_t i = static_cast<std::size_t>(static_cast<unsigned long long>(k) * n / kFoldJudgedPoints);
+      judged.push_back(i);
       points.push_back(points_[i]);
       u.push_back(result_.u[i]);
       v.push_back(result_.v[i]);
@@ -330,14 +344,18 @@ class Driver {
 
   /// The last-resort repair (fold_repair.hpp); the refitted leaves are judged again on the
   /// points they parameterize, at the distances of their new surfaces.
-  void repair() {
-    const Repair repair = repair_far_points(result_, points_, threads_);
+  /// `folds` is the fold measure of the points `judged` (all of them when empty), as
+  /// judge_folds gives it; every point takes the verdict of the nearest judged point. True
+  /// when the repair moved a point.
+  bool repair(const std::vector<std::size_t>& judged, const FoldMeasure& folds) {
+    const Repair repair = repair_folds(result_, points_, judged.empty() ? folds.state : spread_verdicts(points_, judged, folds.state, threads_, &meter_), threads_);
     result_.repaired_points = repair.repaired;
-    if (repair.refitted.empty()) return;
+    if (repair.refitted.empty()) return repair.repaired > 0;
     std::vector<std::vector<double>> distances(result_.patches.size());
     for (std::size_t i = 0; i < points_.size(); ++i)
       if (result_.patch[i] >= 0) distances[static_cast<std::size_t>(result_.patch[i])].push_back(result_.distance[i]);
     for (int id : repair.refitted) judge_leaf(result_.patches[static_cast<std::size_t>(id)], distances[static_cast<std::size_t>(id)]);
+    return repair.repaired > 0;
   }
 
   /// The second part of A2: points whose best foot is clamped try the leaves across.

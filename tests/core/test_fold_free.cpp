@@ -14,7 +14,9 @@
 //   (dbs-bench-folds, README) with a small margin, so a regression fails; tightening them
 //   is the open part of the fold-free work. This group is labelled "slow" (about half a
 //   minute) and left out of the sanitizer run.
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -23,6 +25,8 @@
 #include <Eigen/Geometry>
 
 #include "boundary.hpp"
+#include "fold_measure.hpp"
+#include "fold_repair.hpp"
 #include "fold_shapes.hpp"
 #include "meshless_reference.hpp"
 #include "parameterize.hpp"
@@ -126,6 +130,59 @@ void repair_leaves_gross_outliers_alone(void**) {
   assert_true(on.result.u == plain.result.u && on.result.v == plain.result.v && on.result.distance == plain.result.distance);
 }
 
+void repair_sets_a_scrambled_region_right(void**) {
+  // The clean saddle's result, then the (u,v) of the 60 points nearest its middle point
+  // shuffled among them (a region whose points a surface pleated below its grid's scale
+  // would scatter): the fold measure finds no local map there (scrambled or folded, never
+  // fine), and the repair fills those points from the ones around, so that no reference
+  // triangle folds again; the points around keep their (u,v) bit for bit.
+  const FoldShape shape = dbs_folds::saddle();
+  dbs::Options off;
+  off.repair = 0;
+  Run r = run(shape, off);
+  assert_int_equal(r.folds.folded, 0);
+  const std::vector<Vec3> points = points_of(shape.xyz);
+  const std::size_t middle = shape.grid_a / 2 + shape.grid_a * (shape.grid_b / 2);
+  std::vector<std::size_t> region(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) region[i] = i;
+  std::sort(region.begin(), region.end(), [&](std::size_t a, std::size_t b) { return (points[a] - points[middle]).norm() < (points[b] - points[middle]).norm(); });
+  region.resize(60);
+  dbs::Result& result = r.result;
+  const std::vector<double> u0 = result.u, v0 = result.v;
+  std::uint64_t state = 99;
+  for (std::size_t k = region.size() - 1; k > 0; --k) {  // Fisher-Yates with a fixed LCG
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    const std::size_t j = static_cast<std::size_t>((state >> 33) % (k + 1));
+    std::swap(result.u[region[k]], result.u[region[j]]);
+    std::swap(result.v[region[k]], result.v[region[j]]);
+  }
+  for (std::size_t i : region) result.distance[i] = (result.evaluate(result.u[i], result.v[i]) - points[i]).norm();
+  auto folded = [&] {
+    std::vector<double> uv;
+    for (std::size_t i = 0; i < points.size(); ++i) uv.insert(uv.end(), {result.u[i], result.v[i]});
+    return dbs_folds::fold_share(uv, shape.triangles).folded;
+  };
+  const std::size_t scrambled_folds = folded();
+  const dbs::FoldMeasure measure = dbs::measure_folds(points, result.u, result.v, result.noise, 1);
+  std::size_t doubtful = 0, fine = 0;
+  for (std::size_t i : region) {
+    doubtful += measure.state[i] == dbs::kFoldScrambled || measure.state[i] == dbs::kFolded;
+    fine += measure.state[i] == dbs::kFoldOk;
+  }
+  std::printf("scrambled region: %zu points, %zu reference folds, %zu judged scrambled or folded, %zu fine\n", region.size(), scrambled_folds, doubtful, fine);
+  assert_true(scrambled_folds >= region.size() / 2);
+  assert_true(doubtful >= region.size() * 3 / 4);
+  const dbs::Repair repair = dbs::repair_folds(result, points, measure.state, 1);
+  std::printf("scrambled region: %zu points repaired, %zu reference folds after\n", repair.repaired, folded());
+  assert_int_equal(folded(), 0);
+  assert_true(repair.repaired >= region.size() * 3 / 4);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (result.repaired[i]) continue;
+    const bool inside = std::find(region.begin(), region.end(), i) != region.end();
+    if (!inside) assert_true(result.u[i] == u0[i] && result.v[i] == v0[i]);
+  }
+}
+
 void clean_saddle_has_no_noise(void**) {
   const Run r = run(dbs_folds::saddle());
   assert_int_equal(r.folds.folded, 0);
@@ -149,8 +206,8 @@ void noise_does_not_change_the_level_count(void**) {
 void hard_shapes_stay_within_their_bounds(void**) {
   // Folded reference triangles and mean distance with the default options (the repair on,
   // since 0.4): a little above today's figures, mushroom 0.12% / 0.0047, tall dome 0.18% /
-  // 0.011, fingers 2.76% / 0.0059, open box 0.18% / 0.0007, cone 0.45% / 0.00082, sphere cap
-  // 0.10% / 0.0032. The same without the repair (the default of 0.3): 7.23% / 0.0208, 8.24% /
+  // 0.011, fingers 2.76% / 0.0059, open box 0.18% / 0.0007, cone 0.19% / 0.00077 (0.45% /
+  // 0.00082 before the repair took the points the fold measure doubts), sphere cap 0.10% / 0.0032. The same without the repair (the default of 0.3): 7.23% / 0.0208, 8.24% /
   // 0.0183, 3.62% / 0.0080, 0.18% / 0.0021, 0.77% / 0.0014, 0.10% / 0.0033; before the guard,
   // the seam correction and the seam-aware assignment (0.2): 9.65%, 7.37%, 4.08%, 0.21%,
   // 1.27%, 2.30%. The repair is on by default because it keeps or lowers both figures on
@@ -159,7 +216,7 @@ void hard_shapes_stay_within_their_bounds(void**) {
     const char* name;
     double max_share, max_mean;
   } bounds[] = {{"mushroom", 0.002, 0.006}, {"tall-dome", 0.003, 0.013}, {"fingers", 0.030, 0.007},
-                {"open-box", 0.0025, 0.001}, {"cone", 0.006, 0.001}, {"sphere-cap", 0.003, 0.0034}};
+                {"open-box", 0.0025, 0.001}, {"cone", 0.003, 0.001}, {"sphere-cap", 0.003, 0.0034}};
   dbs::Options without;
   without.repair = 0;
   for (const auto& b : bounds) {
@@ -219,6 +276,29 @@ void repair_on_the_hard_shapes(void**) {
   }
 }
 
+void repair_at_scan_density(void**) {
+  // The two hardest shapes at 2.5 times the points (about 10,000, the size of the scans the
+  // fold-free work is judged on), where the surfaces come close to more of the cloud but
+  // pleat between leaves and scatter the points of steep walls in (u,v). Today: mushroom
+  // 1.80% folded (3.61% without the repair, 3.00% with the repair of far points only),
+  // tall dome 2.92% (5.21%, 4.94%); the repair must keep at least a third off and not raise
+  // the mean distance.
+  const struct {
+    const char* name;
+    double max_share;
+  } bounds[] = {{"mushroom", 0.021}, {"tall-dome", 0.033}};
+  dbs::Options without;
+  without.repair = 0;
+  for (const auto& b : bounds) {
+    const FoldShape shape = dbs_folds::fold_shape(b.name, 2.5);
+    const Run r = run(shape), plain = run(shape, without);
+    assert_true(shape.count() > 10000);
+    assert_true(r.folds.share <= b.max_share);
+    assert_true(3 * r.folds.folded <= 2 * plain.folds.folded);
+    assert_true(r.result.mean_distance <= plain.result.mean_distance);
+  }
+}
+
 void hard_shape_is_scale_and_thread_invariant(void**) {
   const FoldShape shape = dbs_folds::cone();
   dbs::Options one, two;
@@ -251,11 +331,13 @@ int main(int argc, char** argv) {
       cmocka_unit_test(clean_saddle_has_no_noise),
       cmocka_unit_test(repair_leaves_a_noisy_cloud_alone),
       cmocka_unit_test(repair_leaves_gross_outliers_alone),
+      cmocka_unit_test(repair_sets_a_scrambled_region_right),
       cmocka_unit_test(noise_does_not_change_the_level_count),
   };
   const struct CMUnitTest slow[] = {
       cmocka_unit_test(hard_shapes_stay_within_their_bounds),
       cmocka_unit_test(repair_on_the_hard_shapes),
+      cmocka_unit_test(repair_at_scan_density),
       cmocka_unit_test(sphere_cap_against_the_meshless_reference),
       cmocka_unit_test(hard_shape_is_scale_and_thread_invariant),
   };

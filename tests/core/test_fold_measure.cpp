@@ -239,6 +239,48 @@ void scrambled_parameters_are_undecided(void**) {
   const FoldMeasure m = measure_folds(c.points, c.u, c.v, 0.0, 2);
   assert_true(share(m.undecided, m.points) > 0.99);
   assert_true(m.folded <= m.points - m.undecided);
+  // Most of them because no linear map explains their neighbours' (u,v): scrambled, the
+  // verdict the repair acts on (a fine map has none).
+  const std::size_t scrambled = static_cast<std::size_t>(std::count(m.state.begin(), m.state.end(), kFoldScrambled));
+  assert_true(share(scrambled, m.points) > 0.5);
+  const Sample fine = sample(height_field(), 4000, 22);
+  const FoldMeasure f = measure_folds(fine.points, fine.u, fine.v, 0.0, 2);
+  assert_int_equal(std::count(f.state.begin(), f.state.end(), kFoldScrambled), 0);
+}
+
+void verdicts_spread_to_the_nearest_judged_point(void**) {
+  // A 40 x 40 grid, every third point judged with a made-up verdict by its index: each point
+  // takes the verdict of the nearest judged one (checked by brute force), for any thread count.
+  std::vector<Vec3> points;
+  for (int j = 0; j < 40; ++j)
+    for (int i = 0; i < 40; ++i) points.emplace_back(i * 0.1 + 0.003 * ((i * 7 + j * 3) % 5), j * 0.1, 0.01 * ((i + j) % 3));
+  std::vector<std::size_t> judged;
+  std::vector<std::int8_t> verdict;
+  const std::int8_t kinds[] = {kFoldOk, kFolded, kFoldUndecided, kFoldCollapsed, kFoldScrambled};
+  for (std::size_t i = 0; i < points.size(); i += 3) {
+    judged.push_back(i);
+    verdict.push_back(kinds[(i / 3) % 5]);
+  }
+  const std::vector<std::int8_t> one = spread_verdicts(points, judged, verdict, 1), two = spread_verdicts(points, judged, verdict, 2);
+  assert_true(one == two);
+  assert_int_equal(one.size(), points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < judged.size(); ++k)
+      if ((points[judged[k]] - points[i]).squaredNorm() < (points[judged[best]] - points[i]).squaredNorm()) best = k;
+    assert_int_equal(one[i], verdict[best]);
+  }
+  // Mismatched sizes and an index beyond the cloud are refused.
+  for (int bad = 0; bad < 2; ++bad) {
+    bool threw = false;
+    try {
+      if (bad == 0) spread_verdicts(points, judged, std::vector<std::int8_t>(verdict.begin(), verdict.end() - 1), 1);
+      else spread_verdicts(points, {0, points.size()}, {kFoldOk, kFoldOk}, 1);
+    } catch (const Error& e) {
+      threw = e.code() == ErrorCode::InvalidArgument;
+    }
+    assert_true(threw);
+  }
 }
 
 void coincident_count_is_exact(void**) {
@@ -352,6 +394,7 @@ int main() {
       cmocka_unit_test(squeezed_band_is_collapsed_not_folded),
       cmocka_unit_test(global_mirror_folds_nothing),
       cmocka_unit_test(scrambled_parameters_are_undecided),
+      cmocka_unit_test(verdicts_spread_to_the_nearest_judged_point),
       cmocka_unit_test(coincident_count_is_exact),
       cmocka_unit_test(invariant_to_scale),
       cmocka_unit_test(invariant_to_threads),
