@@ -213,8 +213,8 @@ bool at_cloud_border(const CloudIndex& index, const std::vector<Vec3>& points, s
   return offset.norm() > kBorderOffset * spread;
 }
 
-/// The suspect points of fold_state (see repair_folds) besides `far`: 1 for a point to
-/// repair.
+/// The suspect points of fold_state (see repair_folds) besides `far`, and the ring of their
+/// kRepairNeighbours nearest points: 1 for a point to repair.
 std::vector<char> suspect_points(const CloudIndex& index, const std::vector<Vec3>& points, const std::vector<std::int8_t>& fold_state, const std::vector<char>& far, int threads) {
   const std::size_t n = points.size();
   std::vector<char> doubtful(n, 0), suspect(n, 0);
@@ -239,7 +239,19 @@ std::vector<char> suspect_points(const CloudIndex& index, const std::vector<Vec3
     if (state != kFoldScrambled && static_cast<double>(others) < kSuspectClusterShare * static_cast<double>(ids.size() - 1)) return;
     suspect[i] = at_cloud_border(index, points, i) ? 0 : 1;
   });
-  return suspect;
+  // One ring more: the fill's fixed points around a doubtful region are then sound ones, not
+  // its own disturbed edge (the cloud's border stays out, as above).
+  std::vector<std::vector<std::size_t>> ring(n);
+  parallel_for(n, threads, [&](std::size_t i) {
+    if (!suspect[i]) return;
+    std::vector<double> d2;
+    index.knn(points[i], kRepairNeighbours + 1, ring[i], d2);
+    ring[i].erase(std::remove_if(ring[i].begin(), ring[i].end(), [&](std::size_t m) { return suspect[m] || far[m] || at_cloud_border(index, points, m); }), ring[i].end());
+  });
+  std::vector<char> taken = suspect;
+  for (const std::vector<std::size_t>& around : ring)
+    for (std::size_t m : around) taken[m] = 1;
+  return taken;
 }
 
 }  // namespace

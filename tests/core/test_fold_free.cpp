@@ -206,7 +206,7 @@ void noise_does_not_change_the_level_count(void**) {
 void hard_shapes_stay_within_their_bounds(void**) {
   // Folded reference triangles and mean distance with the default options (the repair on,
   // since 0.4): a little above today's figures, mushroom 0.12% / 0.0047, tall dome 0.18% /
-  // 0.011, fingers 2.76% / 0.0059, open box 0.18% / 0.0007, cone 0.19% / 0.00077 (0.45% /
+  // 0.011, fingers 2.76% / 0.0060, open box 0.18% / 0.0007, cone 0.25% / 0.00071 (0.45% /
   // 0.00082 before the repair took the points the fold measure doubts), sphere cap 0.10% / 0.0032. The same without the repair (the default of 0.3): 7.23% / 0.0208, 8.24% /
   // 0.0183, 3.62% / 0.0080, 0.18% / 0.0021, 0.77% / 0.0014, 0.10% / 0.0033; before the guard,
   // the seam correction and the seam-aware assignment (0.2): 9.65%, 7.37%, 4.08%, 0.21%,
@@ -280,13 +280,14 @@ void repair_at_scan_density(void**) {
   // The two hardest shapes at 2.5 times the points (about 10,000, the size of the scans the
   // fold-free work is judged on), where the surfaces come close to more of the cloud but
   // pleat between leaves and scatter the points of steep walls in (u,v). Today: mushroom
-  // 1.80% folded (3.61% without the repair, 3.00% with the repair of far points only),
-  // tall dome 2.92% (5.21%, 4.94%); the repair must keep at least a third off and not raise
-  // the mean distance.
+  // 1.41% folded (3.61% without the repair, 3.00% with the repair of far points only),
+  // tall dome 1.73% (5.21%, 4.94%); the repair must keep at least half of them off and not
+  // raise the mean distance above the one without it (mushroom 0.00149 against 0.00205, dome
+  // 0.00097 against 0.00119).
   const struct {
     const char* name;
     double max_share;
-  } bounds[] = {{"mushroom", 0.021}, {"tall-dome", 0.033}};
+  } bounds[] = {{"mushroom", 0.016}, {"tall-dome", 0.020}};
   dbs::Options without;
   without.repair = 0;
   for (const auto& b : bounds) {
@@ -294,7 +295,7 @@ void repair_at_scan_density(void**) {
     const Run r = run(shape), plain = run(shape, without);
     assert_true(shape.count() > 10000);
     assert_true(r.folds.share <= b.max_share);
-    assert_true(3 * r.folds.folded <= 2 * plain.folds.folded);
+    assert_true(2 * r.folds.folded <= plain.folds.folded);
     assert_true(r.result.mean_distance <= plain.result.mean_distance);
   }
 }
