@@ -256,6 +256,15 @@ std::vector<char> suspect_points(const CloudIndex& index, const std::vector<Vec3
 
 }  // namespace
 
+bool has_suspect_points(const std::vector<Vec3>& points, const std::vector<std::int8_t>& fold_state, int threads) {
+  bool any_doubt = false;
+  for (std::int8_t state : fold_state) any_doubt = any_doubt || state != kFoldOk;
+  if (!any_doubt || fold_state.size() != points.size()) return false;
+  const CloudIndex index(points);
+  const std::vector<char> suspect = suspect_points(index, points, fold_state, std::vector<char>(points.size(), 0), threads);
+  return std::find(suspect.begin(), suspect.end(), 1) != suspect.end();
+}
+
 Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::vector<std::int8_t>& fold_state, int threads) {
   const std::size_t n = points.size();
   result.repaired.assign(n, 0);

@@ -50,6 +50,11 @@ struct Repair {
   std::vector<int> refitted;       ///< leaves refitted, in increasing id order
 };
 
+/// Whether repair_folds would take any point of `points` for the fold measure's verdicts
+/// `fold_state` on them (one per point), far points aside: a cheap test on a sample of a large
+/// cloud before its verdicts are spread over every point.
+bool has_suspect_points(const std::vector<Vec3>& points, const std::vector<std::int8_t>& fold_state, int threads);
+
 /// Repairs the far points of `result` (parameters of `points`, which it was made from) and
 /// the suspect ones of `fold_state` (the fold measure's verdict on each point of that
 /// result, or empty: far points only) in place, setting result.repaired, and refits the

@@ -348,7 +348,14 @@ class Driver {
   /// judge_folds gives it; every point takes the verdict of the nearest judged point. True
   /// when the repair moved a point.
   bool repair(const std::vector<std::size_t>& judged, const FoldMeasure& folds) {
-    const Repair repair = repair_folds(result_, points_, judged.empty() ? folds.state : spread_verdicts(points_, judged, folds.state, threads_, &meter_), threads_);
+    std::vector<std::int8_t> state = folds.state;
+    if (!judged.empty()) {
+      // Spread over every point (a query per point) only when some judged point is suspect.
+      std::vector<Vec3> sample;
+      for (std::size_t i : judged) sample.push_back(points_[i]);
+      state = has_suspect_points(sample, folds.state, threads_) ? spread_verdicts(points_, judged, folds.state, threads_, &meter_) : std::vector<std::int8_t>{};
+    }
+    const Repair repair = repair_folds(result_, points_, state, threads_);
     result_.repaired_points = repair.repaired;
     if (repair.refitted.empty()) return repair.repaired > 0;
     std::vector<std::vector<double>> distances(result_.patches.size());
