@@ -1,5 +1,6 @@
 // dbs_boundary_*: four-sided boundaries from arrays and files.
 #include "arrays.hpp"
+#include "boundary_from_loop.hpp"
 #include "boundary_io.hpp"
 #include "firewall.hpp"
 
@@ -23,6 +24,15 @@ int dbs_boundary_create(const double* bottom, size_t n_bottom, const double* rig
     require_non_null(out, "out");
     dbs::Boundary boundary(points_from(bottom, n_bottom), points_from(right, n_right), points_from(top, n_top), points_from(left, n_left));
     *out = new dbs_boundary{std::move(boundary)};
+  });
+}
+
+int dbs_boundary_from_loop(const double* xyz, size_t n, const size_t* corners, dbs_boundary** out) {
+  return guarded(__func__, [&] {
+    require_non_null(xyz, "xyz");
+    require_non_null(corners, "corners");
+    require_non_null(out, "out");
+    *out = new dbs_boundary{dbs::boundary_from_loop(points_from(xyz, n), {corners[0], corners[1], corners[2], corners[3]})};
   });
 }
 

@@ -241,6 +241,21 @@ typedef struct dbs_boundary dbs_boundary;
  *  DBS_ERR_OUT_OF_RANGE (coordinates so large that the boundary's size overflows),
  *  DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_boundary_create(const double *bottom, size_t n_bottom, const double *right, size_t n_right, const double *top, size_t n_top, const double *left, size_t n_left, dbs_boundary **out);
+/** A boundary cut from one closed polyline `xyz` of `n` points (3 doubles each; the first
+ *  point not repeated at the end: a last point equal to the first is dropped) at the four
+ *  loop points `corners[0..3]` (indices), which become (0,0), (1,0), (1,1), (0,1). The
+ *  corners must be distinct and in cyclic order along the loop, in either direction: the
+ *  bottom runs along the loop from corners[0] to corners[1] (the way that passes no other
+ *  corner), the right from corners[1] to corners[2], the top from corners[3] to corners[2],
+ *  the left from corners[0] to corners[3]. The loop's direction does not matter (the loop
+ *  reversed, its corner indices following it, gives the same boundary bit for bit); rotating
+ *  the corner list rotates the domain. The sides hold the loop's own points and share the
+ *  corner points exactly; then checked as dbs_boundary_create does.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (fewer than 4 distinct points,
+ *  corners repeated or not in cyclic order), DBS_ERR_OUT_OF_RANGE (a corner index not below
+ *  n), DBS_ERR_NON_FINITE, DBS_ERR_DEGENERATE (as dbs_boundary_create),
+ *  DBS_ERR_NO_MEMORY. \since 0.4 */
+DBS_API int dbs_boundary_from_loop(const double *xyz, size_t n, const size_t *corners, dbs_boundary **out);
 /** Loads a boundary file (docs/FORMATS.md: sections bottom, right, top, left), then checks
  *  it as dbs_boundary_create does (messages prefixed with the file name).
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_IO, DBS_ERR_PARSE (a malformed line, an unknown,

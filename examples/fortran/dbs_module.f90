@@ -145,6 +145,14 @@ module dbs
       type(c_ptr), intent(out) :: out
       integer(c_int) :: dbs_boundary_create
     end function
+    function dbs_boundary_from_loop(xyz, n, corners, out) bind(C, name="dbs_boundary_from_loop")
+      import :: c_int, c_double, c_size_t, c_ptr
+      real(c_double), intent(in) :: xyz(*)
+      integer(c_size_t), value :: n
+      integer(c_size_t), intent(in) :: corners(4)
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: dbs_boundary_from_loop
+    end function
     function dbs_boundary_load(path, out) bind(C, name="dbs_boundary_load")
       import :: c_int, c_char, c_ptr
       character(kind=c_char), intent(in) :: path(*)

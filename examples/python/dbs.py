@@ -176,6 +176,7 @@ PROTOTYPES = {
     "dbs_cloud_bounds": (_int, [_ptr, _P(_dbl), _P(_dbl)]),
     "dbs_cloud_points": (_int, [_ptr, _P(_dbl), _size]),
     "dbs_boundary_create": (_int, [_P(_dbl), _size, _P(_dbl), _size, _P(_dbl), _size, _P(_dbl), _size, _P(_ptr)]),
+    "dbs_boundary_from_loop": (_int, [_P(_dbl), _size, _P(_size), _P(_ptr)]),
     "dbs_boundary_load": (_int, [_str, _P(_ptr)]),
     "dbs_boundary_save": (_int, [_ptr, _str]),
     "dbs_boundary_destroy": (None, [_ptr]),
@@ -354,6 +355,18 @@ class Boundary(_Handle):
         sides = [_points_array(side) for side in (bottom, right, top, left)]
         handle = _ptr()
         _check(lib.dbs_boundary_create(*[x for side in sides for x in side], ctypes.byref(handle)))
+        return cls(handle)
+
+    @classmethod
+    def from_loop(cls, loop, corners):
+        """The boundary cut from a closed polyline at four of its point indices, the corners
+        (0,0), (1,0), (1,1), (0,1) in that order (dbs_boundary_from_loop)."""
+        array, count = _points_array(loop)
+        if len(corners) != 4:
+            raise ValueError("corners needs 4 point indices, got %d" % len(corners))
+        indices = (_size * 4)(*[int(c) for c in corners])
+        handle = _ptr()
+        _check(lib.dbs_boundary_from_loop(array, count, indices, ctypes.byref(handle)))
         return cls(handle)
 
     @classmethod

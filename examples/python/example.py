@@ -16,6 +16,14 @@ def main(argv):
 
     cloud = dbs.Cloud.load(cloud_path)
     boundary = dbs.Boundary.load(boundary_path)
+    # The same boundary as one closed loop cut at its four corners (an outline traced around
+    # a scan would come this way): bottom, right, then top and left backwards.
+    bottom, right, top, left = (boundary.side(s) for s in (dbs.SIDE_BOTTOM, dbs.SIDE_RIGHT, dbs.SIDE_TOP, dbs.SIDE_LEFT))
+    loop = bottom + right[1:] + top[::-1][1:] + left[::-1][1:-1]
+    corners = [0, len(bottom) - 1, len(bottom) + len(right) - 2, len(bottom) + len(right) + len(top) - 3]
+    cut = dbs.Boundary.from_loop(loop, corners)
+    if [cut.side(s) for s in range(4)] != [bottom, right, top, left]:
+        raise SystemExit("Boundary.from_loop did not give back the sides")
     low, high = cloud.bounds()
     print(f"{len(cloud)} points in [{low[0]:.4g}, {high[0]:.4g}] x [{low[1]:.4g}, {high[1]:.4g}] x [{low[2]:.4g}, {high[2]:.4g}]")
 

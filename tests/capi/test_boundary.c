@@ -186,6 +186,108 @@ static void save_reads_back_bit_for_bit(void **state) {
   dbs_boundary_destroy(boundary);
 }
 
+/* A closed, non-planar loop: an ellipse 2 x 1 with z = 0.3 sin(2t), unevenly spaced. */
+#define LOOP_POINTS 40
+static void make_loop(double *xyz) {
+  for (int i = 0; i < LOOP_POINTS; ++i) {
+    const double t = 2.0 * 3.14159265358979323846 * (i + 0.3 * sin(i)) / LOOP_POINTS;
+    xyz[3 * i] = 2.0 * cos(t);
+    xyz[3 * i + 1] = sin(t);
+    xyz[3 * i + 2] = 0.3 * sin(2.0 * t);
+  }
+}
+
+/* The points of one side, malloc'ed; *n receives their count. */
+static double *side_points(const dbs_boundary *boundary, int32_t side, size_t *n) {
+  assert_ok(dbs_boundary_side_count(boundary, side, n));
+  double *xyz = malloc(3 * *n * sizeof(double));
+  assert_ok(dbs_boundary_side_points(boundary, side, xyz, *n));
+  return xyz;
+}
+
+/* Side `side` of a equals side `other` of b, reversed when `reversed`, bit for bit. */
+static void assert_side_matches(const dbs_boundary *a, int32_t side, const dbs_boundary *b, int32_t other, int reversed) {
+  size_t na = 0, nb = 0;
+  double *pa = side_points(a, side, &na), *pb = side_points(b, other, &nb);
+  assert_int_equal(na, nb);
+  for (size_t i = 0; i < na; ++i) {
+    const size_t j = reversed ? na - 1 - i : i;
+    assert_memory_equal(pa + 3 * i, pb + 3 * j, 3 * sizeof(double));
+  }
+  free(pa);
+  free(pb);
+}
+
+static void from_loop_cuts_the_sides(void **state) {
+  (void)state;
+  /* The 100 x 50 panel traced once around: the sides of dbs_boundary_create, bit for bit. */
+  const double loop[] = {0, 0, 0, 40, 0, 0, 100, 0, 0, 100, 50, 0, 0, 50, 0};
+  const size_t corners[] = {0, 2, 3, 4};
+  dbs_boundary *cut = NULL, *made = NULL;
+  assert_ok(dbs_boundary_from_loop(loop, 5, corners, &cut));
+  assert_ok(dbs_boundary_create(kBottom, 3, kRight, 2, kTop, 2, kLeft, 2, &made));
+  assert_same_sides(cut, made);
+  dbs_boundary_destroy(cut);
+  dbs_boundary_destroy(made);
+}
+
+static void from_loop_ignores_direction_and_rotates(void **state) {
+  (void)state;
+  double loop[3 * (LOOP_POINTS + 1)], reversed[3 * LOOP_POINTS];
+  make_loop(loop);
+  const size_t corners[] = {3, 13, 22, 31};
+  dbs_boundary *a = NULL, *b = NULL;
+  assert_ok(dbs_boundary_from_loop(loop, LOOP_POINTS, corners, &a));
+  size_t counts[4];
+  for (int32_t side = 0; side < 4; ++side) assert_ok(dbs_boundary_side_count(a, side, &counts[side]));
+  assert_int_equal(counts[DBS_SIDE_BOTTOM], 11);
+  assert_int_equal(counts[DBS_SIDE_RIGHT], 10);
+  assert_int_equal(counts[DBS_SIDE_TOP], 10);
+  assert_int_equal(counts[DBS_SIDE_LEFT], 13); /* 31 .. 39, 0 .. 3: across the loop's start */
+  /* The loop reversed, the corner indices following it: the same boundary. */
+  for (int i = 0; i < LOOP_POINTS; ++i) memcpy(reversed + 3 * i, loop + 3 * (LOOP_POINTS - 1 - i), 3 * sizeof(double));
+  const size_t mirrored[] = {LOOP_POINTS - 1 - 3, LOOP_POINTS - 1 - 13, LOOP_POINTS - 1 - 22, LOOP_POINTS - 1 - 31};
+  assert_ok(dbs_boundary_from_loop(reversed, LOOP_POINTS, mirrored, &b));
+  assert_same_sides(a, b);
+  dbs_boundary_destroy(b);
+  /* The first point repeated at the end: the same boundary. */
+  memcpy(loop + 3 * LOOP_POINTS, loop, 3 * sizeof(double));
+  assert_ok(dbs_boundary_from_loop(loop, LOOP_POINTS + 1, corners, &b));
+  assert_same_sides(a, b);
+  dbs_boundary_destroy(b);
+  /* The corner list rotated: the domain turned by a quarter, (0,0) now at the old (1,0). */
+  const size_t rotated[] = {13, 22, 31, 3};
+  assert_ok(dbs_boundary_from_loop(loop, LOOP_POINTS, rotated, &b));
+  assert_side_matches(b, DBS_SIDE_BOTTOM, a, DBS_SIDE_RIGHT, 0);
+  assert_side_matches(b, DBS_SIDE_RIGHT, a, DBS_SIDE_TOP, 1);
+  assert_side_matches(b, DBS_SIDE_TOP, a, DBS_SIDE_LEFT, 0);
+  assert_side_matches(b, DBS_SIDE_LEFT, a, DBS_SIDE_BOTTOM, 1);
+  dbs_boundary_destroy(b);
+  dbs_boundary_destroy(a);
+}
+
+static void from_loop_refuses_bad_loops_and_corners(void **state) {
+  (void)state;
+  double loop[3 * LOOP_POINTS];
+  make_loop(loop);
+  dbs_boundary *boundary = UNTOUCHED;
+  const size_t crossed[] = {3, 22, 13, 31}, repeated[] = {3, 13, 13, 31}, beyond[] = {3, 13, 22, 40}, corners[] = {3, 13, 22, 31}, first[] = {0, 1, 2, 3};
+  assert_failure(dbs_boundary_from_loop(loop, LOOP_POINTS, crossed, &boundary), DBS_ERR_INVALID_ARGUMENT, "dbs_boundary_from_loop", "not in cyclic order");
+  assert_failure(dbs_boundary_from_loop(loop, LOOP_POINTS, repeated, &boundary), DBS_ERR_INVALID_ARGUMENT, "dbs_boundary_from_loop", "corners 1 and 2 are the same loop point 13");
+  assert_failure(dbs_boundary_from_loop(loop, LOOP_POINTS, beyond, &boundary), DBS_ERR_OUT_OF_RANGE, "dbs_boundary_from_loop", "corner 3 is index 40");
+  assert_failure(dbs_boundary_from_loop(loop, 3, first, &boundary), DBS_ERR_INVALID_ARGUMENT, "dbs_boundary_from_loop", "at least 4");
+  assert_failure(dbs_boundary_from_loop(NULL, LOOP_POINTS, corners, &boundary), DBS_ERR_NULL_ARGUMENT, "dbs_boundary_from_loop", "xyz");
+  assert_failure(dbs_boundary_from_loop(loop, LOOP_POINTS, NULL, &boundary), DBS_ERR_NULL_ARGUMENT, "dbs_boundary_from_loop", "corners");
+  assert_failure(dbs_boundary_from_loop(loop, LOOP_POINTS, corners, NULL), DBS_ERR_NULL_ARGUMENT, "dbs_boundary_from_loop", "out");
+  loop[3 * 7 + 1] = NAN;
+  assert_failure(dbs_boundary_from_loop(loop, LOOP_POINTS, corners, &boundary), DBS_ERR_NON_FINITE, "dbs_boundary_from_loop", "loop point 7");
+  /* Out along a line and back: no area. */
+  const double flat[] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0, 2, 0, 0, 1, 0, 0};
+  const size_t flat_corners[] = {0, 2, 3, 4};
+  assert_failure(dbs_boundary_from_loop(flat, 6, flat_corners, &boundary), DBS_ERR_DEGENERATE, "dbs_boundary_from_loop", "");
+  assert_true(boundary == UNTOUCHED);
+}
+
 static void destroy_accepts_null(void **state) {
   (void)state;
   dbs_boundary_destroy(NULL);
@@ -201,6 +303,9 @@ int main(void) {
       cmocka_unit_test(load_reads_sections_in_any_order),
       cmocka_unit_test(load_errors_name_file_and_line),
       cmocka_unit_test(save_reads_back_bit_for_bit),
+      cmocka_unit_test(from_loop_cuts_the_sides),
+      cmocka_unit_test(from_loop_ignores_direction_and_rotates),
+      cmocka_unit_test(from_loop_refuses_bad_loops_and_corners),
       cmocka_unit_test(destroy_accepts_null),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
