@@ -27,6 +27,36 @@ int dbs_boundary_create(const double* bottom, size_t n_bottom, const double* rig
   });
 }
 
+namespace {
+
+dbs::Boundary::CornerTolerance corner_tolerance(double tolerance, int32_t relative) { return {tolerance, relative != 0}; }
+
+}  // namespace
+
+int dbs_boundary_create_tolerant(const double* bottom, size_t n_bottom, const double* right, size_t n_right, const double* top, size_t n_top, const double* left, size_t n_left, double tolerance, int32_t relative,
+                                 double* out_max_snap, dbs_boundary** out) {
+  return guarded(__func__, [&] {
+    require_non_null(bottom, "bottom");
+    require_non_null(right, "right");
+    require_non_null(top, "top");
+    require_non_null(left, "left");
+    require_non_null(out, "out");
+    dbs::Boundary boundary(points_from(bottom, n_bottom), points_from(right, n_right), points_from(top, n_top), points_from(left, n_left), corner_tolerance(tolerance, relative));
+    if (out_max_snap) *out_max_snap = boundary.max_snap();
+    *out = new dbs_boundary{std::move(boundary)};
+  });
+}
+
+int dbs_boundary_load_tolerant(const char* path, double tolerance, int32_t relative, double* out_max_snap, dbs_boundary** out) {
+  return guarded(__func__, [&] {
+    require_non_null(path, "path");
+    require_non_null(out, "out");
+    dbs::Boundary boundary = dbs::load_boundary(path, corner_tolerance(tolerance, relative));
+    if (out_max_snap) *out_max_snap = boundary.max_snap();
+    *out = new dbs_boundary{std::move(boundary)};
+  });
+}
+
 int dbs_boundary_from_loop(const double* xyz, size_t n, const size_t* corners, dbs_boundary** out) {
   return guarded(__func__, [&] {
     require_non_null(xyz, "xyz");

@@ -44,6 +44,8 @@ static const char *const usage_text =
     "  --own F                    subcloud 'own' limit, fraction of a patch diagonal [0.05]\n"
     "  --noise-floor 0|1          raise the target to the cloud's noise floor [1]\n"
     "  --repair 0|1               last-resort repair of points the surfaces never reached [1]\n"
+    "  --corner-tolerance F       corners of BOUNDARY may miss by F times its size; they are\n"
+    "                             snapped together [1e-6]\n"
     "  --report DIR               also write a validation report into DIR: mesh files,\n"
     "                             pictures and summary.json (see dbs_report_write)\n"
     "  -q, --quiet                no progress and no summary\n"
@@ -85,7 +87,11 @@ static void library_error(int status, const char *doing) {
     fputc('\n', stderr);
     progress_line_open = 0;
   }
-  fprintf(stderr, "dbs-param: %s: %s\n", doing, text);
+  fprintf(stderr, "dbs-param: %s: %s", doing, text);
+  /* Corners that miss by more than the tolerance: say how to accept them (same line). */
+  if (status == DBS_ERR_DEGENERATE && strstr(text, " apart (tolerance") != NULL)
+    fputs("; --corner-tolerance F snaps corners that miss by up to F times the boundary's size", stderr);
+  fputc('\n', stderr);
 }
 
 /* ---- numeric arguments ------------------------------------------------------------ */
@@ -150,6 +156,7 @@ struct command_line {
   const char *boundary_path;
   const char *result_path;
   const char *report_dir;
+  double corner_tolerance; /* relative; < 0: the library's default */
   int quiet;
 };
 
@@ -207,6 +214,7 @@ static void parse_command_line(int argc, char **argv, struct command_line *cmd) 
   int positional = 0;
   int options_ended = 0;
   memset(cmd, 0, sizeof *cmd);
+  cmd->corner_tolerance = -1.0;
   for (i = 1; i < argc; ++i) {
     const char *arg = argv[i];
     if (!options_ended && arg[0] == '-' && arg[1] != '\0') {
@@ -239,6 +247,10 @@ static void parse_command_line(int argc, char **argv, struct command_line *cmd) 
         } else {
           usage_error("%s needs a value (the report directory)", arg);
         }
+      } else if (flag_length == 18 && strncmp(arg, "--corner-tolerance", 18) == 0) {
+        if (equals == NULL && i + 1 >= argc) usage_error("%s needs a value (a fraction of the boundary's size)", arg);
+        cmd->corner_tolerance = parse_double("--corner-tolerance", equals != NULL ? equals + 1 : argv[++i]);
+        if (!(cmd->corner_tolerance >= 0.0)) usage_error("--corner-tolerance: %g is not a fraction >= 0", cmd->corner_tolerance);
       } else if ((option = find_library_option(arg, flag_length)) != NULL) {
         if (equals != NULL) {
           store_option_value(option, equals + 1);
@@ -383,7 +395,7 @@ static void warn_if_target_raised(const dbs_result *result) {
             stat_of(result, DBS_STAT_NOISE));
 }
 
-static void print_summary(const dbs_result *result, const char *result_path) {
+static void print_summary(const dbs_result *result, const char *result_path, double corner_snap) {
   size_t points = 0;
   dbs_result_point_count(result, &points);
   printf("points          %lu\n", (unsigned long)points);
@@ -408,6 +420,7 @@ static void print_summary(const dbs_result *result, const char *result_path) {
          stat_of(result, DBS_STAT_JUDGED_POINTS), stat_of(result, DBS_STAT_FOLDED_POINTS), stat_of(result, DBS_STAT_UNDECIDED_POINTS), stat_of(result, DBS_STAT_COINCIDENT_POINTS));
   printf("collapsed       %.0f of the undecided points squeezed in (u,v)\n", stat_of(result, DBS_STAT_COLLAPSED_POINTS));
   if (stat_of(result, DBS_STAT_REPAIRED_POINTS) > 0.0) printf("repaired        %.0f points\n", stat_of(result, DBS_STAT_REPAIRED_POINTS));
+  if (corner_snap > 0.0) printf("corners         snapped together, the farthest end moved %.6g\n", corner_snap);
   printf("time            %.3f s\n", stat_of(result, DBS_STAT_SECONDS));
   printf("result          %s\n", result_path);
 }
@@ -421,6 +434,7 @@ int main(int argc, char **argv) {
   dbs_cloud *cloud = NULL;
   dbs_boundary *boundary = NULL;
   dbs_result *result = NULL;
+  double corner_snap = 0.0;
   int status;
   int open_error;
   int exit_code = EXIT_FAILURE;
@@ -458,7 +472,8 @@ int main(int argc, char **argv) {
     library_error(status, "reading the cloud");
     goto done;
   }
-  if ((status = dbs_boundary_load(cmd.boundary_path, &boundary)) != DBS_OK) {
+  if ((status = cmd.corner_tolerance >= 0.0 ? dbs_boundary_load_tolerant(cmd.boundary_path, cmd.corner_tolerance, 1, &corner_snap, &boundary)
+                                            : dbs_boundary_load(cmd.boundary_path, &boundary)) != DBS_OK) {
     library_error(status, "reading the boundary");
     goto done;
   }
@@ -479,7 +494,7 @@ int main(int argc, char **argv) {
     library_error(status, "writing the report");
     goto done;
   }
-  if (!cmd.quiet) print_summary(result, cmd.result_path);
+  if (!cmd.quiet) print_summary(result, cmd.result_path, corner_snap);
   if (!cmd.quiet && cmd.report_dir != NULL) printf("report          %s\n", cmd.report_dir);
   exit_code = EXIT_SUCCESS;
 

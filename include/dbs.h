@@ -241,6 +241,20 @@ typedef struct dbs_boundary dbs_boundary;
  *  DBS_ERR_OUT_OF_RANGE (coordinates so large that the boundary's size overflows),
  *  DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_boundary_create(const double *bottom, size_t n_bottom, const double *right, size_t n_right, const double *top, size_t n_top, const double *left, size_t n_left, dbs_boundary **out);
+/** dbs_boundary_create with corners allowed to miss each other by `tolerance`: in the
+ *  boundary's units, or times its bounding-box diagonal when `relative` is non-zero (the
+ *  default of dbs_boundary_create is 1e-6 relative), at most 0.1 of the diagonal. Corners
+ *  within it are made to coincide exactly (each pair at its mean); `out_max_snap` (may be
+ *  NULL) receives how far the farthest corner end moved (half the largest miss; 0 when all
+ *  met). Sides shorter than the tolerance are DBS_ERR_DEGENERATE. Corners that miss say
+ *  the fix when an evident one makes them meet ("top runs backwards (...): reverse it",
+ *  "left and right are swapped").
+ *  Returns as dbs_boundary_create, and DBS_ERR_OUT_OF_RANGE (a tolerance negative, not
+ *  finite or above 0.1 of the diagonal); *out and *out_max_snap untouched on failure. \since 0.4 */
+DBS_API int dbs_boundary_create_tolerant(const double *bottom, size_t n_bottom, const double *right, size_t n_right, const double *top, size_t n_top, const double *left, size_t n_left, double tolerance, int32_t relative, double *out_max_snap, dbs_boundary **out);
+/** dbs_boundary_load with the corner tolerance of dbs_boundary_create_tolerant.
+ *  Returns as dbs_boundary_load, and DBS_ERR_OUT_OF_RANGE (the tolerance). \since 0.4 */
+DBS_API int dbs_boundary_load_tolerant(const char *path, double tolerance, int32_t relative, double *out_max_snap, dbs_boundary **out);
 /** A boundary cut from one closed polyline `xyz` of `n` points (3 doubles each; the first
  *  point not repeated at the end: a last point equal to the first is dropped) at the four
  *  loop points `corners[0..3]` (indices), which become (0,0), (1,0), (1,1), (0,1). The

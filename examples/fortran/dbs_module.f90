@@ -145,6 +145,27 @@ module dbs
       type(c_ptr), intent(out) :: out
       integer(c_int) :: dbs_boundary_create
     end function
+    function dbs_boundary_create_tolerant(bottom, n_bottom, right, n_right, top, n_top, left, n_left, &
+        tolerance, relative, out_max_snap, out) bind(C, name="dbs_boundary_create_tolerant")
+      import :: c_int, c_int32_t, c_double, c_size_t, c_ptr
+      real(c_double), intent(in) :: bottom(*), right(*), top(*), left(*)
+      integer(c_size_t), value :: n_bottom, n_right, n_top, n_left
+      real(c_double), value :: tolerance
+      integer(c_int32_t), value :: relative
+      real(c_double), intent(out) :: out_max_snap
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: dbs_boundary_create_tolerant
+    end function
+    function dbs_boundary_load_tolerant(path, tolerance, relative, out_max_snap, out) &
+        bind(C, name="dbs_boundary_load_tolerant")
+      import :: c_int, c_int32_t, c_char, c_double, c_ptr
+      character(kind=c_char), intent(in) :: path(*)
+      real(c_double), value :: tolerance
+      integer(c_int32_t), value :: relative
+      real(c_double), intent(out) :: out_max_snap
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: dbs_boundary_load_tolerant
+    end function
     function dbs_boundary_from_loop(xyz, n, corners, out) bind(C, name="dbs_boundary_from_loop")
       import :: c_int, c_double, c_size_t, c_ptr
       real(c_double), intent(in) :: xyz(*)

@@ -176,6 +176,8 @@ PROTOTYPES = {
     "dbs_cloud_bounds": (_int, [_ptr, _P(_dbl), _P(_dbl)]),
     "dbs_cloud_points": (_int, [_ptr, _P(_dbl), _size]),
     "dbs_boundary_create": (_int, [_P(_dbl), _size, _P(_dbl), _size, _P(_dbl), _size, _P(_dbl), _size, _P(_ptr)]),
+    "dbs_boundary_create_tolerant": (_int, [_P(_dbl), _size, _P(_dbl), _size, _P(_dbl), _size, _P(_dbl), _size, _dbl, _i32, _P(_dbl), _P(_ptr)]),
+    "dbs_boundary_load_tolerant": (_int, [_str, _dbl, _i32, _P(_dbl), _P(_ptr)]),
     "dbs_boundary_from_loop": (_int, [_P(_dbl), _size, _P(_size), _P(_ptr)]),
     "dbs_boundary_load": (_int, [_str, _P(_ptr)]),
     "dbs_boundary_save": (_int, [_ptr, _str]),
@@ -350,12 +352,24 @@ class Cloud(_Handle):
 class Boundary(_Handle):
     _destroy = lib.dbs_boundary_destroy
 
+    max_snap = 0.0
+    """How far the farthest corner end was moved to make the corners meet (with a tolerance)."""
+
     @classmethod
-    def from_sides(cls, bottom, right, top, left):
+    def from_sides(cls, bottom, right, top, left, tolerance=None, relative=True):
+        """The four sides; corners may miss by `tolerance` (times the boundary's size when
+        `relative`; None: the library's default, 1e-6 relative) and are then snapped."""
         sides = [_points_array(side) for side in (bottom, right, top, left)]
+        flat = [x for side in sides for x in side]
         handle = _ptr()
-        _check(lib.dbs_boundary_create(*[x for side in sides for x in side], ctypes.byref(handle)))
-        return cls(handle)
+        if tolerance is None:
+            _check(lib.dbs_boundary_create(*flat, ctypes.byref(handle)))
+            return cls(handle)
+        snap = _dbl()
+        _check(lib.dbs_boundary_create_tolerant(*flat, float(tolerance), 1 if relative else 0, ctypes.byref(snap), ctypes.byref(handle)))
+        boundary = cls(handle)
+        boundary.max_snap = snap.value
+        return boundary
 
     @classmethod
     def from_loop(cls, loop, corners):
@@ -370,10 +384,17 @@ class Boundary(_Handle):
         return cls(handle)
 
     @classmethod
-    def load(cls, path):
+    def load(cls, path, tolerance=None, relative=True):
+        """A boundary file; `tolerance` as in from_sides."""
         handle = _ptr()
-        _check(lib.dbs_boundary_load(os.fsencode(path), ctypes.byref(handle)))
-        return cls(handle)
+        if tolerance is None:
+            _check(lib.dbs_boundary_load(os.fsencode(path), ctypes.byref(handle)))
+            return cls(handle)
+        snap = _dbl()
+        _check(lib.dbs_boundary_load_tolerant(os.fsencode(path), float(tolerance), 1 if relative else 0, ctypes.byref(snap), ctypes.byref(handle)))
+        boundary = cls(handle)
+        boundary.max_snap = snap.value
+        return boundary
 
     def save(self, path):
         """Writes the boundary file; Boundary.load(path) gives the same sides bit for bit."""

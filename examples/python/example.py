@@ -24,6 +24,17 @@ def main(argv):
     cut = dbs.Boundary.from_loop(loop, corners)
     if [cut.side(s) for s in range(4)] != [bottom, right, top, left]:
         raise SystemExit("Boundary.from_loop did not give back the sides")
+    # Sides exported from CAD at 1e-3 miss their corners a little: a tolerance snaps them.
+    low_y, high_y = min(p[1] for p in right), max(p[1] for p in right)
+    moved = [(x, y + 1e-4 * (high_y - low_y), z) for (x, y, z) in right]
+    try:
+        dbs.Boundary.from_sides(bottom, moved, top, left)
+        raise SystemExit("corners 1e-4 apart were accepted without a tolerance")
+    except dbs.DbsError as error:
+        assert error.status == dbs.ERR_DEGENERATE, error.status
+    snapped = dbs.Boundary.from_sides(bottom, moved, top, left, tolerance=1e-3)
+    if not 0.0 < snapped.max_snap < 1e-3 * (high_y - low_y):
+        raise SystemExit(f"unexpected corner snap {snapped.max_snap}")
     low, high = cloud.bounds()
     print(f"{len(cloud)} points in [{low[0]:.4g}, {high[0]:.4g}] x [{low[1]:.4g}, {high[1]:.4g}] x [{low[2]:.4g}, {high[2]:.4g}]")
 

@@ -31,7 +31,9 @@ std::string first_token(std::string_view line) { return std::string(line.substr(
 
 }  // namespace
 
-Boundary load_boundary(const std::string& path) {
+Boundary load_boundary(const std::string& path) { return load_boundary(path, Boundary::CornerTolerance{Boundary::kCornerTolerance, true}); }
+
+Boundary load_boundary(const std::string& path, Boundary::CornerTolerance tolerance) {
   const std::string text = read_file_bytes(path);
   std::array<std::vector<Vec3>, 4> points;
   std::array<std::size_t, 4> section_line{};  // 0: not seen
@@ -69,7 +71,7 @@ Boundary load_boundary(const std::string& path) {
       fail(ErrorCode::Parse, file_line(path, section_line[i]) + ": section '" + side_name(s) + "' has " + (points[i].empty() ? "no points" : "1 point") + ", needs at least 2");
   }
   try {
-    return Boundary(std::move(points[0]), std::move(points[1]), std::move(points[2]), std::move(points[3]));
+    return Boundary(std::move(points[0]), std::move(points[1]), std::move(points[2]), std::move(points[3]), tolerance);
   } catch (const Error& e) {
     throw Error(e.code(), path + ": " + e.what());
   }

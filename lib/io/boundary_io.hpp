@@ -10,6 +10,8 @@ namespace dbs {
 /// section given twice or missing, a malformed or non-finite coordinate, fewer than 2
 /// points; geometric problems as Boundary's constructor reports them.
 Boundary load_boundary(const std::string& path);
+/// The same with corners allowed to miss by `tolerance` (Boundary's constructor).
+Boundary load_boundary(const std::string& path, Boundary::CornerTolerance tolerance);
 
 /// Writes `boundary` in the boundary file format (FORMATS.md): a comment line, then the
 /// sections bottom, right, top, left, each point as the shortest text that reads back to the

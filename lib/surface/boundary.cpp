@@ -1,6 +1,7 @@
 #include "boundary.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -62,13 +63,51 @@ double polyline_length(const std::vector<Vec3>& pts) {
 }
 
 // A side shorter than the corner tolerance joins two corners that are the same point.
-void check_side_length(Side s, double length, double size) {
-  const double tol = Boundary::kCornerTolerance * size;
+void check_side_length(Side s, double length, double size, double tol) {
   if (length == 0.0) fail(ErrorCode::Degenerate, side_label(s) + " has zero length (all its points coincide)");
   if (length <= tol)
     fail(ErrorCode::Degenerate, side_label(s) + " has length " + format_number(length) + ", below the corner tolerance " +
-                                    format_number(tol) + " (" + format_number(Boundary::kCornerTolerance) + " of the boundary size " +
+                                    format_number(tol) + " (" + format_number(tol / size) + " of the boundary size " +
                                     format_number(size) + ")");
+}
+
+// The end of side `s` (its first point, or its last when `at_end`), with the sides given as
+// they are except those flagged in `reversed` (bit s), which are read backwards, and the
+// sides renamed by `as` (as[s]: the side given in place of s).
+const Vec3& end_of(const std::array<std::vector<Vec3>, 4>& pts, Side s, bool at_end, unsigned reversed, const std::array<int, 4>& as) {
+  const int given = as[static_cast<int>(s)];
+  const bool back = at_end != (((reversed >> given) & 1u) != 0);
+  return back ? pts[given].back() : pts[given].front();
+}
+
+// Whether every corner meets within `tol` with the sides read as end_of reads them.
+bool corners_meet(const std::array<std::vector<Vec3>, 4>& pts, double tol, unsigned reversed, const std::array<int, 4>& as) {
+  for (const CornerEnds& c : kCorners)
+    if ((end_of(pts, c.a, c.a_at_end, reversed, as) - end_of(pts, c.b, c.b_at_end, reversed, as)).norm() > tol) return false;
+  return true;
+}
+
+// The fix for corners that miss, when an evident one makes them all meet: a side or two
+// running backwards, left and right or bottom and top swapped. "" when none does.
+std::string corner_fix(const std::array<std::vector<Vec3>, 4>& pts, double tol) {
+  const std::array<int, 4> given{{0, 1, 2, 3}};
+  // One side backwards: its start meets where its end should, and the other way round.
+  for (Side s : kSides) {
+    if (!corners_meet(pts, tol, 1u << static_cast<int>(s), given)) continue;
+    const bool row = s == Side::Bottom || s == Side::Top;
+    const char* start_meets = row ? (s == Side::Bottom ? "right's start" : "right's end") : (s == Side::Left ? "top's start" : "top's end");
+    const char* end_meets = row ? (s == Side::Bottom ? "left's start" : "left's end") : (s == Side::Left ? "bottom's start" : "bottom's end");
+    return std::string("; ") + side_name(s) + " runs backwards (its start meets " + start_meets + ", its end meets " + end_meets + "): reverse it";
+  }
+  const std::array<int, 4> lr{{0, 3, 2, 1}}, bt{{2, 1, 0, 3}};
+  if (corners_meet(pts, tol, 0u, lr)) return "; left and right are swapped";
+  if (corners_meet(pts, tol, 0u, bt)) return "; bottom and top are swapped";
+  // Two sides backwards (a side pair traced the other way round).
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b)
+      if (corners_meet(pts, tol, (1u << a) | (1u << b), given))
+        return std::string("; ") + side_name(kSides[a]) + " and " + side_name(kSides[b]) + " run backwards: reverse them";
+  return "";
 }
 
 double checked_size(const Box3& box) {
@@ -122,7 +161,7 @@ const char* side_name(Side side) {
   return "unknown";
 }
 
-Boundary::Boundary(std::vector<Vec3> bottom, std::vector<Vec3> right, std::vector<Vec3> top, std::vector<Vec3> left) {
+Boundary::Boundary(std::vector<Vec3> bottom, std::vector<Vec3> right, std::vector<Vec3> top, std::vector<Vec3> left, CornerTolerance tolerance) {
   std::array<std::vector<Vec3>, 4> pts = {std::move(bottom), std::move(right), std::move(top), std::move(left)};
   Box3 box;
   for (Side s : kSides) {
@@ -130,8 +169,14 @@ Boundary::Boundary(std::vector<Vec3> bottom, std::vector<Vec3> right, std::vecto
     for (const Vec3& p : pts[static_cast<int>(s)]) box.extend(p);
   }
   const double size = checked_size(box);
+  if (!std::isfinite(tolerance.value) || tolerance.value < 0.0)
+    fail(ErrorCode::OutOfRange, "the corner tolerance " + format_number(tolerance.value) + " is not a finite value >= 0");
+  const double tol = tolerance.relative ? tolerance.value * size : tolerance.value;
+  if (tol > kMaxCornerTolerance * size)
+    fail(ErrorCode::OutOfRange, "the corner tolerance " + format_number(tol) + " is above " + format_number(kMaxCornerTolerance) + " of the boundary size " + format_number(size));
+  const std::string tolerance_text = tolerance.relative ? format_number(tolerance.value) + " of the boundary size " + format_number(size)
+                                                        : format_number(tol) + ", the boundary size " + format_number(size);
 
-  const double tol = kCornerTolerance * size;
   for (const CornerEnds& c : kCorners) {
     Vec3& a = c.a_at_end ? pts[static_cast<int>(c.a)].back() : pts[static_cast<int>(c.a)].front();
     Vec3& b = c.b_at_end ? pts[static_cast<int>(c.b)].back() : pts[static_cast<int>(c.b)].front();
@@ -139,12 +184,18 @@ Boundary::Boundary(std::vector<Vec3> bottom, std::vector<Vec3> right, std::vecto
     if (miss > tol)
       fail(ErrorCode::Degenerate, corner_label(c) + ": " + end_label(c.a, c.a_at_end) + format_point(a) + " but " +
                                       end_label(c.b, c.b_at_end) + format_point(b) + ", " + format_number(miss) + " apart (tolerance " +
-                                      format_number(kCornerTolerance) + " of the boundary size " + format_number(size) + ")");
-    a = b = 0.5 * (a + b);  // exactly a when a == b
+                                      tolerance_text + ")" + corner_fix(pts, tol));
+  }
+  for (const CornerEnds& c : kCorners) {
+    Vec3& a = c.a_at_end ? pts[static_cast<int>(c.a)].back() : pts[static_cast<int>(c.a)].front();
+    Vec3& b = c.b_at_end ? pts[static_cast<int>(c.b)].back() : pts[static_cast<int>(c.b)].front();
+    const Vec3 mean = 0.5 * (a + b);  // exactly a when a == b
+    max_snap_ = std::max({max_snap_, (a - mean).norm(), (b - mean).norm()});
+    a = b = mean;
   }
 
   for (Side s : kSides) {
-    check_side_length(s, polyline_length(pts[static_cast<int>(s)]), size);
+    check_side_length(s, polyline_length(pts[static_cast<int>(s)]), size, std::max(tol, kCornerTolerance * size));
     sides_[static_cast<int>(s)] = Polyline(std::move(pts[static_cast<int>(s)]));
   }
   check_area(*this, size);
@@ -162,7 +213,7 @@ Boundary::Boundary(Polyline bottom, Polyline right, Polyline top, Polyline left)
                                       end_label(c.b, c.b_at_end) + format_point(b) + "; the sides must share the corner exactly");
   }
   const double size = checked_size(bounds());
-  for (Side s : kSides) check_side_length(s, side(s).length(), size);
+  for (Side s : kSides) check_side_length(s, side(s).length(), size, kCornerTolerance * size);
   check_area(*this, size);
 }
 

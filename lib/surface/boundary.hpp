@@ -18,11 +18,28 @@ class Boundary {
   /// bounding-box diagonal and are then made to coincide exactly (their mean).
   static constexpr double kCornerTolerance = 1e-6;
 
+  /// The largest relative corner tolerance accepted (CornerTolerance): a tenth of the size.
+  static constexpr double kMaxCornerTolerance = 0.1;
+
+  /// How far corners may miss each other: `value` in cloud units, or times the boundary's
+  /// bounding-box diagonal when `relative`.
+  struct CornerTolerance {
+    double value;
+    bool relative;
+  };
+
   Boundary() = default;
   /// Validates: >= 2 finite points per side (Error(InvalidArgument)/NonFinite naming the
-  /// side and point), corners within tolerance (Degenerate, naming the corner and the
-  /// miss), no zero-length side, non-zero spanned area (Degenerate).
-  Boundary(std::vector<Vec3> bottom, std::vector<Vec3> right, std::vector<Vec3> top, std::vector<Vec3> left);
+  /// side and point), corners within `tolerance` (Degenerate, naming the corner and the
+  /// miss, and the fix where one is evident: a side running backwards, left and right or
+  /// bottom and top swapped), no side shorter than the tolerance, non-zero spanned area
+  /// (Degenerate). Corners within it are made to coincide exactly (their mean); max_snap()
+  /// says how far the farthest moved. A tolerance that is negative, not finite or above
+  /// kMaxCornerTolerance of the size is Error(OutOfRange).
+  Boundary(std::vector<Vec3> bottom, std::vector<Vec3> right, std::vector<Vec3> top, std::vector<Vec3> left, CornerTolerance tolerance);
+  /// The same with the default tolerance, kCornerTolerance of the size.
+  Boundary(std::vector<Vec3> bottom, std::vector<Vec3> right, std::vector<Vec3> top, std::vector<Vec3> left)
+      : Boundary(std::move(bottom), std::move(right), std::move(top), std::move(left), CornerTolerance{kCornerTolerance, true}) {}
   /// Already-consistent sides (e.g. halves of a parent's sides): corners must coincide
   /// exactly; checked, not repaired.
   Boundary(Polyline bottom, Polyline right, Polyline top, Polyline left);
@@ -38,9 +55,13 @@ class Boundary {
   Box3 bounds() const;
   /// Diagonal of bounds(): the boundary's size.
   double size() const { return bounds().diagonal(); }
+  /// How far the constructor moved the farthest corner end to make the corners coincide
+  /// (half the largest miss; 0 for sides that met exactly, or made from polylines).
+  double max_snap() const { return max_snap_; }
 
  private:
   std::array<Polyline, 4> sides_;
+  double max_snap_ = 0.0;
 };
 
 }  // namespace dbs

@@ -186,6 +186,74 @@ static void save_reads_back_bit_for_bit(void **state) {
   dbs_boundary_destroy(boundary);
 }
 
+static void tolerance_snaps_corners_a_cad_export_misses(void **state) {
+  (void)state;
+  /* The right side starts 0.05 off the bottom's end: 4.5e-4 of the size (111.8), as a CAD
+     export at 1e-3 leaves it. Refused by default, snapped within 1e-3 of the size. */
+  const double right[] = {100, 0.05, 0, 100, 50, 0};
+  dbs_boundary *boundary = UNTOUCHED;
+  double snap = -1.0;
+  assert_failure(dbs_boundary_create(kBottom, 3, right, 2, kTop, 2, kLeft, 2, &boundary), DBS_ERR_DEGENERATE, "dbs_boundary_create", "0.05 apart");
+  assert_ok(dbs_boundary_create_tolerant(kBottom, 3, right, 2, kTop, 2, kLeft, 2, 1e-3, 1, &snap, &boundary));
+  assert_true(snap == 0.025); /* each end moved half the miss */
+  double bottom[9], right_back[6];
+  assert_ok(dbs_boundary_side_points(boundary, DBS_SIDE_BOTTOM, bottom, 3));
+  assert_ok(dbs_boundary_side_points(boundary, DBS_SIDE_RIGHT, right_back, 2));
+  assert_memory_equal(bottom + 6, right_back, 3 * sizeof(double));
+  assert_true(bottom[7] == 0.025);
+  dbs_boundary_destroy(boundary);
+  /* In the boundary's units: 0.06 snaps it, 0.04 does not (and names the tolerance). */
+  assert_ok(dbs_boundary_create_tolerant(kBottom, 3, right, 2, kTop, 2, kLeft, 2, 0.06, 0, NULL, &boundary));
+  dbs_boundary_destroy(boundary);
+  boundary = UNTOUCHED;
+  snap = -1.0;
+  assert_failure(dbs_boundary_create_tolerant(kBottom, 3, right, 2, kTop, 2, kLeft, 2, 0.04, 0, &snap, &boundary), DBS_ERR_DEGENERATE, "dbs_boundary_create_tolerant", "tolerance 0.04");
+  /* Sides that meet exactly snap nothing. */
+  assert_ok(dbs_boundary_create_tolerant(kBottom, 3, kRight, 2, kTop, 2, kLeft, 2, 1e-3, 1, &snap, &boundary));
+  assert_true(snap == 0.0);
+  dbs_boundary_destroy(boundary);
+  /* Tolerances out of range leave *out and *out_max_snap alone. */
+  boundary = UNTOUCHED;
+  snap = -1.0;
+  assert_failure(dbs_boundary_create_tolerant(kBottom, 3, right, 2, kTop, 2, kLeft, 2, -1e-3, 1, &snap, &boundary), DBS_ERR_OUT_OF_RANGE, "dbs_boundary_create_tolerant", "-0.001");
+  assert_failure(dbs_boundary_create_tolerant(kBottom, 3, right, 2, kTop, 2, kLeft, 2, NAN, 1, &snap, &boundary), DBS_ERR_OUT_OF_RANGE, "dbs_boundary_create_tolerant", "finite");
+  assert_failure(dbs_boundary_create_tolerant(kBottom, 3, right, 2, kTop, 2, kLeft, 2, 0.2, 1, &snap, &boundary), DBS_ERR_OUT_OF_RANGE, "dbs_boundary_create_tolerant", "above 0.1 of the boundary size");
+  assert_failure(dbs_boundary_create_tolerant(kBottom, 3, right, 2, kTop, 2, kLeft, 2, 20.0, 0, &snap, &boundary), DBS_ERR_OUT_OF_RANGE, "dbs_boundary_create_tolerant", "above 0.1");
+  assert_failure(dbs_boundary_create_tolerant(kBottom, 3, right, 2, kTop, 2, kLeft, 2, 1e-3, 1, &snap, NULL), DBS_ERR_NULL_ARGUMENT, "dbs_boundary_create_tolerant", "out");
+  assert_true(boundary == UNTOUCHED && snap == -1.0);
+  /* The loader takes the same tolerance. */
+  char path[512];
+  temp_file(path, sizeof path, "cad_boundary.txt", "bottom\n0 0 0\n40 0 0\n100 0 0\nright\n100 0.05 0\n100 50 0\ntop\n0 50 0\n100 50 0\nleft\n0 0 0\n0 50 0\n");
+  assert_failure(dbs_boundary_load(path, &boundary), DBS_ERR_DEGENERATE, "dbs_boundary_load", "cad_boundary.txt");
+  assert_ok(dbs_boundary_load_tolerant(path, 1e-3, 1, &snap, &boundary));
+  assert_true(snap == 0.025);
+  dbs_boundary_destroy(boundary);
+  boundary = UNTOUCHED;
+  assert_failure(dbs_boundary_load_tolerant(path, 0.5, 1, &snap, &boundary), DBS_ERR_OUT_OF_RANGE, "dbs_boundary_load_tolerant", "corner tolerance");
+  assert_failure(dbs_boundary_load_tolerant(NULL, 1e-3, 1, &snap, &boundary), DBS_ERR_NULL_ARGUMENT, "dbs_boundary_load_tolerant", "path");
+  assert_true(boundary == UNTOUCHED);
+}
+
+static void corners_that_miss_say_the_fix(void **state) {
+  (void)state;
+  dbs_boundary *boundary = UNTOUCHED;
+  const double top_backwards[] = {100, 50, 0, 0, 50, 0};
+  assert_failure(dbs_boundary_create(kBottom, 3, kRight, 2, top_backwards, 2, kLeft, 2, &boundary), DBS_ERR_DEGENERATE, "dbs_boundary_create",
+                 "top runs backwards (its start meets right's end, its end meets left's end): reverse it");
+  const double bottom_backwards[] = {100, 0, 0, 40, 0, 0, 0, 0, 0};
+  assert_failure(dbs_boundary_create(bottom_backwards, 3, kRight, 2, kTop, 2, kLeft, 2, &boundary), DBS_ERR_DEGENERATE, "dbs_boundary_create",
+                 "bottom runs backwards (its start meets right's start, its end meets left's start): reverse it");
+  assert_failure(dbs_boundary_create(kBottom, 3, kLeft, 2, kTop, 2, kRight, 2, &boundary), DBS_ERR_DEGENERATE, "dbs_boundary_create", "left and right are swapped");
+  assert_failure(dbs_boundary_create(kTop, 2, kRight, 2, kBottom, 3, kLeft, 2, &boundary), DBS_ERR_DEGENERATE, "dbs_boundary_create", "bottom and top are swapped");
+  const double left_backwards[] = {0, 50, 0, 0, 0, 0};
+  assert_failure(dbs_boundary_create(bottom_backwards, 3, kRight, 2, kTop, 2, left_backwards, 2, &boundary), DBS_ERR_DEGENERATE, "dbs_boundary_create",
+                 "bottom and left run backwards: reverse them");
+  /* No evident fix: the corner and the miss only. */
+  const double elsewhere[] = {200, 0, 0, 200, 50, 0};
+  assert_failure(dbs_boundary_create(kBottom, 3, elsewhere, 2, kTop, 2, kLeft, 2, &boundary), DBS_ERR_DEGENERATE, "dbs_boundary_create", "100 apart (tolerance 1e-6 of the boundary size 206.155)");
+  assert_true(boundary == UNTOUCHED);
+}
+
 /* A closed, non-planar loop: an ellipse 2 x 1 with z = 0.3 sin(2t), unevenly spaced. */
 #define LOOP_POINTS 40
 static void make_loop(double *xyz) {
@@ -303,6 +371,8 @@ int main(void) {
       cmocka_unit_test(load_reads_sections_in_any_order),
       cmocka_unit_test(load_errors_name_file_and_line),
       cmocka_unit_test(save_reads_back_bit_for_bit),
+      cmocka_unit_test(tolerance_snaps_corners_a_cad_export_misses),
+      cmocka_unit_test(corners_that_miss_say_the_fix),
       cmocka_unit_test(from_loop_cuts_the_sides),
       cmocka_unit_test(from_loop_ignores_direction_and_rotates),
       cmocka_unit_test(from_loop_refuses_bad_loops_and_corners),
