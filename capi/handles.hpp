@@ -31,6 +31,8 @@ struct dbs_options {
   void* progress_payload = nullptr;
   int (*level)(int32_t level, const dbs_patches* patches, void* payload) = nullptr;
   void* level_payload = nullptr;
+  void (*warning)(const char* message, void* payload) = nullptr;
+  void* warning_payload = nullptr;
 };
 
 /// A result and the view of all its patches, which points into `result.patches` (so the

@@ -89,6 +89,14 @@ int dbs_options_set_progress(dbs_options* options, dbs_progress_fn fn, void* pay
   });
 }
 
+int dbs_options_set_warning(dbs_options* options, dbs_warning_fn fn, void* payload) {
+  return guarded(__func__, [&] {
+    require_non_null(options, "options");
+    options->warning = fn;
+    options->warning_payload = fn ? payload : nullptr;
+  });
+}
+
 int dbs_options_set_level_callback(dbs_options* options, dbs_level_fn fn, void* payload) {
   return guarded(__func__, [&] {
     require_non_null(options, "options");

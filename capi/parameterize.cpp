@@ -24,6 +24,10 @@ dbs::Options run_options(const dbs_options* handle) {
       return level(number, &view, payload) != 0;
     };
   }
+  if (dbs_warning_fn warning = handle->warning) {
+    void* payload = handle->warning_payload;
+    options.warning = [warning, payload](const char* message) { warning(message, payload); };
+  }
   return options;
 }
 

@@ -385,6 +385,17 @@ static double stat_of(const dbs_result *result, int32_t stat) {
   return value;
 }
 
+/* A likely mistake in the inputs (the library's warning callback): on stderr, even with
+ * --quiet, since the run goes on and exits 0. */
+static void print_warning(const char *message, void *payload) {
+  (void)payload;
+  if (progress_line_open) {
+    fputc('\n', stderr);
+    progress_line_open = 0;
+  }
+  fprintf(stderr, "dbs-param: warning: %s\n", message);
+}
+
 /* The noise floor raised a target the user gave: say so on stderr (even with --quiet, since
  * the result is then judged against another target than the one asked for). */
 static void warn_if_target_raised(const dbs_result *result) {
@@ -420,6 +431,8 @@ static void print_summary(const dbs_result *result, const char *result_path, dou
          stat_of(result, DBS_STAT_JUDGED_POINTS), stat_of(result, DBS_STAT_FOLDED_POINTS), stat_of(result, DBS_STAT_UNDECIDED_POINTS), stat_of(result, DBS_STAT_COINCIDENT_POINTS));
   printf("collapsed       %.0f of the undecided points squeezed in (u,v)\n", stat_of(result, DBS_STAT_COLLAPSED_POINTS));
   if (stat_of(result, DBS_STAT_REPAIRED_POINTS) > 0.0) printf("repaired        %.0f points\n", stat_of(result, DBS_STAT_REPAIRED_POINTS));
+  printf("inputs          boundary %.3g spacings from the cloud, cloud/boundary size %.3g, domain covered %.1f %%, %.0f points clamped\n",
+         stat_of(result, DBS_STAT_BOUNDARY_GAP), stat_of(result, DBS_STAT_SCALE_RATIO), 100.0 * stat_of(result, DBS_STAT_COVERAGE), stat_of(result, DBS_STAT_CLAMPED_POINTS));
   if (corner_snap > 0.0) printf("corners         snapped together, the farthest end moved %.6g\n", corner_snap);
   printf("time            %.3f s\n", stat_of(result, DBS_STAT_SECONDS));
   printf("result          %s\n", result_path);
@@ -462,6 +475,10 @@ int main(int argc, char **argv) {
   if (build_options(options)) goto done;
   if (!cmd.quiet && (status = dbs_options_set_progress(options, show_progress, &progress)) != DBS_OK) {
     library_error(status, "setting the progress callback");
+    goto done;
+  }
+  if ((status = dbs_options_set_warning(options, print_warning, NULL)) != DBS_OK) {
+    library_error(status, "setting the warning callback");
     goto done;
   }
   if ((open_error = result_open_error(cmd.result_path)) != 0) {

@@ -398,6 +398,18 @@ DBS_API int dbs_options_set_progress(dbs_options *options, dbs_progress_fn fn, v
  *  Returns DBS_ERR_NULL_ARGUMENT. \since 0.1 */
 DBS_API int dbs_options_set_level_callback(dbs_options *options, dbs_level_fn fn, void *payload);
 
+/** Called with one line naming a likely mistake in the inputs, each time one is found
+ *  during dbs_parameterize: the boundary's size against the cloud's, its distance to the
+ *  cloud (both before the run), the share of the domain the points cover and the points
+ *  clamped onto the domain's edge (after it); see DBS_STAT_BOUNDARY_GAP and the three after
+ *  it. The run goes on. The string is valid only during the call. Called on the thread that
+ *  called dbs_parameterize; must return normally. \since 0.4 */
+typedef void (*dbs_warning_fn)(const char *message, void *payload);
+/** Sets (or with fn == NULL clears) the warning callback; `payload` as for
+ *  dbs_options_set_progress. Modifies `options`: must not race with any other use of them.
+ *  Returns DBS_ERR_NULL_ARGUMENT. \since 0.4 */
+DBS_API int dbs_options_set_warning(dbs_options *options, dbs_warning_fn fn, void *payload);
+
 /* ---- parameterization (\since 0.1) --------------------------------------------- */
 /** The outcome of a run: per-point parameters, the patch quadtree, statistics. Immutable;
  *  independent of the cloud, boundary and options it was made from. \since 0.1 */
@@ -477,6 +489,10 @@ DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, do
 #define DBS_STAT_CERES_ITERATIONS 26      /* \since 0.4: Ceres iterations over all refined grid sections of all patches (0 with the linear solver), a count */
 #define DBS_STAT_LOSS_SCALE 27            /* \since 0.4: the scale of the robust loss used (DBS_OPT_LOSS_SCALE, or the derived one), cloud units; 0 without a loss or with the linear solver */
 #define DBS_STAT_COLLAPSED_POINTS 28      /* \since 0.4: of the UNDECIDED points, those whose neighbourhood is squeezed in (u,v) (most neighbours share its (u,v), the local map to (u,v) has rank about one, or its determinant is below 1e-3 of the median): where a surface never reached the cloud, points pile up without turning over, which the FOLDED count cannot see; a count */
+#define DBS_STAT_BOUNDARY_GAP 29          /* \since 0.4: the boundary's distance to the cloud: of 256 points spread along its sides, 90% lie within this distance of their nearest cloud point, in point spacings (DBS_STAT_LENGTH_SCALE); above 10 a warning (dbs_options_set_warning) asks whether the boundary belongs to this cloud */
+#define DBS_STAT_SCALE_RATIO 30           /* \since 0.4: the cloud's bounding-box diagonal over the boundary's, a ratio (about 1 when the boundary surrounds its scan; beyond 10 or below 1/10 a warning asks whether they are in the same units) */
+#define DBS_STAT_COVERAGE 31              /* \since 0.4: the share of [0,1]^2 the points' (u,v) cover: cells of a grid with about 16 points per cell (at least 2 x 2, at most 256 x 256) holding a point, in [0,1]; below 0.75 a warning says the cloud covers only part of the boundary */
+#define DBS_STAT_CLAMPED_POINTS 32        /* \since 0.4: points whose (u,v) lies on the domain's edge while they are farther than a point spacing from the surface there (outside the boundary, clamped onto it), a count; beyond 1% of the points (and at least 10) a warning asks whether the scan is larger than its boundary */
 /** One summary statistic (DBS_STAT_*) of the result, in the unit given beside its id.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (stat). \since 0.1 */
 DBS_API int dbs_result_stat(const dbs_result *result, int32_t stat, double *out);

@@ -55,6 +55,8 @@ module dbs
   integer(c_int32_t), parameter :: DBS_STAT_REPAIRED_POINTS = 24
   integer(c_int32_t), parameter :: DBS_STAT_SOLVER = 25, DBS_STAT_CERES_ITERATIONS = 26, DBS_STAT_LOSS_SCALE = 27
   integer(c_int32_t), parameter :: DBS_STAT_COLLAPSED_POINTS = 28
+  integer(c_int32_t), parameter :: DBS_STAT_BOUNDARY_GAP = 29, DBS_STAT_SCALE_RATIO = 30
+  integer(c_int32_t), parameter :: DBS_STAT_COVERAGE = 31, DBS_STAT_CLAMPED_POINTS = 32
 
   ! ---- validation: meshes, distortion, distances ----------------------------------------
   real(c_double), parameter :: DBS_MESH_SUSPICIOUS_FACTOR = 4.0_c_double
@@ -273,6 +275,13 @@ module dbs
       type(c_funptr), value :: fn
       type(c_ptr), value :: payload
       integer(c_int) :: dbs_options_set_level_callback
+    end function
+    function dbs_options_set_warning(options, fn, payload) bind(C, name="dbs_options_set_warning")
+      import :: c_int, c_ptr, c_funptr
+      type(c_ptr), value :: options
+      type(c_funptr), value :: fn
+      type(c_ptr), value :: payload
+      integer(c_int) :: dbs_options_set_warning
     end function
 
     ! ---- parameterization ----------------------------------------------------------------

@@ -110,6 +110,10 @@ STAT_SOLVER = 25
 STAT_CERES_ITERATIONS = 26
 STAT_LOSS_SCALE = 27
 STAT_COLLAPSED_POINTS = 28
+STAT_BOUNDARY_GAP = 29
+STAT_SCALE_RATIO = 30
+STAT_COVERAGE = 31
+STAT_CLAMPED_POINTS = 32
 
 MESH_SUSPICIOUS_FACTOR = 4.0
 
@@ -161,6 +165,7 @@ _P = ctypes.POINTER
 
 PROGRESS_FN = ctypes.CFUNCTYPE(_int, _dbl, _str, _ptr)  # (fraction, stage, payload)
 LEVEL_FN = ctypes.CFUNCTYPE(_int, _i32, _ptr, _ptr)  # (level, patches, payload)
+WARNING_FN = ctypes.CFUNCTYPE(None, _str, _ptr)  # (message, payload)
 
 PROTOTYPES = {
     # name: (restype, argtypes)
@@ -194,6 +199,7 @@ PROTOTYPES = {
     "dbs_option_bounds": (_int, [_i32, _P(_dbl), _P(_dbl)]),
     "dbs_options_set_progress": (_int, [_ptr, PROGRESS_FN, _ptr]),
     "dbs_options_set_level_callback": (_int, [_ptr, LEVEL_FN, _ptr]),
+    "dbs_options_set_warning": (_int, [_ptr, WARNING_FN, _ptr]),
     "dbs_parameterize": (_int, [_ptr, _ptr, _ptr, _P(_ptr)]),
     "dbs_result_destroy": (None, [_ptr]),
     "dbs_result_point_count": (_int, [_ptr, _P(_size)]),
@@ -477,6 +483,22 @@ class Options(_Handle):
 
         callback = LEVEL_FN(adaptor) if function else LEVEL_FN()
         _check(lib.dbs_options_set_level_callback(self._handle, callback, None))
+        self._callbacks.append(callback)
+        return self
+
+    def on_warning(self, function):
+        """function(message): a likely mistake in the inputs (the boundary's size or distance
+        against the cloud, the domain's coverage, points clamped outside the boundary); the
+        run goes on. None clears it."""
+
+        def adaptor(message, _payload):
+            try:
+                function(message.decode())
+            except Exception:
+                pass  # a warning must not stop the run
+
+        callback = WARNING_FN(adaptor) if function else WARNING_FN()
+        _check(lib.dbs_options_set_warning(self._handle, callback, None))
         self._callbacks.append(callback)
         return self
 

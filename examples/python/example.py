@@ -52,7 +52,17 @@ def main(argv):
     levels = []
     options.on_level(lambda level, patches: levels.append((level, len(patches))))
 
+    warnings = []
+    options.on_warning(warnings.append)
     result = dbs.parameterize(cloud, boundary, options)
+    if warnings:
+        raise SystemExit(f"the example's inputs fit each other, yet: {warnings}")
+    # The boundary in other units (1000 times larger) is named by a warning; the run goes on.
+    scaled = dbs.Boundary.from_sides(*[[(1000 * x, 1000 * y, 1000 * z) for (x, y, z) in side] for side in (bottom, right, top, left)])
+    dbs.parameterize(cloud, scaled, dbs.Options().set(dbs.OPT_MAX_LEVEL, 0).on_warning(warnings.append))
+    if not any("same units" in w for w in warnings):
+        raise SystemExit(f"no warning for a boundary 1000 times the cloud: {warnings}")
+    print(f"warned as expected: {warnings[0]}")
     if fractions[-1] != 1.0 or fractions != sorted(fractions):
         raise SystemExit(f"progress did not rise to exactly 1.0: {fractions[-3:]}")
     uv = result.uv()

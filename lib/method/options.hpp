@@ -16,6 +16,8 @@ using ProgressFn = std::function<bool(double fraction, const char* stage)>;
 /// Level observer: called once per finished quadtree level with that level's patches;
 /// returns true to cancel.
 using LevelFn = std::function<bool(int level, const std::vector<const Patch*>& patches)>;
+/// Warning observer: one line naming a likely mistake in the inputs (input_checks.hpp).
+using WarningFn = std::function<void(const char* message)>;
 
 struct Options {
   double accuracy = 0.0;            // absolute mean-distance target; 0 = use relative_accuracy
@@ -44,6 +46,7 @@ struct Options {
   double ceres_function_tolerance = 1e-6;
   ProgressFn progress;
   LevelFn on_level;
+  WarningFn warning;
   /// For tests: called before each progress report with its stage and the work units
   /// (points projected, grid nodes solved) counted so far in the run.
   std::function<void(const char* stage, unsigned long long units)> work_probe;

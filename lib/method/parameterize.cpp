@@ -14,6 +14,7 @@
 #include "evolve.hpp"
 #include "fold_measure.hpp"
 #include "fold_repair.hpp"
+#include "input_checks.hpp"
 #include "noise_estimate.hpp"
 #include "number_text.hpp"
 #include "parallel.hpp"
@@ -72,7 +73,7 @@ double cloud_size(const PointCloud& cloud, const Boundary& boundary) {
 class Driver {
  public:
   Driver(const PointCloud& cloud, const Boundary& boundary, const Options& options)
-      : points_(cloud.points()), options_(options), progress_(options.progress), threads_(resolve_threads(options.threads)) {
+      : points_(cloud.points()), boundary_(boundary), options_(options), progress_(options.progress), threads_(resolve_threads(options.threads)) {
     meter_.set_report([this] { report_work(); });
     result_.requested_accuracy = options.accuracy > 0.0 ? options.accuracy : options.relative_accuracy * cloud_size(cloud, boundary);
     Patch root{BaseSurface(boundary)};
@@ -92,6 +93,8 @@ class Driver {
     result_.noise = noise.sigma;
     result_.stage_seconds.index = seconds_since(start);
     if (!(result_.length_scale > 0.0)) fail(ErrorCode::Degenerate, "the cloud's points all coincide (length scale 0)");
+    check_boundary_against_cloud(*cloud_index_, boundary_, result_.length_scale, checks_);
+    warn(boundary_warnings(checks_));
     // The noise floor: a surface lying exactly on the true surface scores a mean distance of
     // about sigma sqrt(2/pi) against points with Gaussian noise sigma along the normal; a
     // target below that can only be met by following the noise (leaves tilting, subdividing
@@ -109,6 +112,9 @@ class Driver {
     }
     const auto parameterize_start = Clock::now();
     project_across_borders();
+    // Judged on the feet, before the repair gives far points their neighbours' (u,v).
+    check_parameters(result_, checks_);
+    warn(parameter_warnings(checks_, points_.size()));
     result_.stage_seconds.parameterize += seconds_since(parameterize_start);
     // The fold measure judges the result; with the repair on it judges it first for the
     // repair, and again only when the repair moved a point.
@@ -130,6 +136,10 @@ class Driver {
       }
     }
     summarize();
+    result_.boundary_gap = checks_.boundary_gap;
+    result_.scale_ratio = checks_.scale_ratio;
+    result_.coverage = checks_.coverage;
+    result_.clamped_points = checks_.clamped;
     result_.judged_points = folds.points;
     result_.folded_points = folds.folded;
     result_.undecided_points = folds.undecided;
@@ -476,6 +486,12 @@ class Driver {
     progress_.report(fraction, stage);
   }
 
+  /// Each message to the warning callback, if any (on the calling thread).
+  void warn(const std::vector<std::string>& messages) const {
+    if (!options_.warning) return;
+    for (const std::string& m : messages) options_.warning(m.c_str());
+  }
+
   /// A stage running from fraction `begin` to `end`, expected to take `expected_units` of
   /// work: reported now, and by report_work() after every WorkMeter::kDefaultReportEvery units.
   void begin_stage(const char* stage, double begin, double end, std::uint64_t expected_units) {
@@ -494,7 +510,9 @@ class Driver {
   }
 
   const std::vector<Vec3>& points_;
+  const Boundary& boundary_;
   const Options& options_;
+  InputChecks checks_;
   Progress progress_;
   WorkMeter meter_;
   std::unique_ptr<CloudIndex> cloud_index_;  // the whole cloud's, until the root is split

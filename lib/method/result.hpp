@@ -37,6 +37,11 @@ struct Result {
   std::size_t ceres_iterations = 0;  // Ceres iterations over them
   double loss_scale = 0.0;    // the robust loss's scale used, cloud units; 0 without a loss
   double length_scale = 0.0;  // h
+  // The inputs checked against each other (input_checks.hpp).
+  double boundary_gap = 0.0;    // the boundary's distance to the cloud, in spacings h
+  double scale_ratio = 1.0;     // the cloud's size / the boundary's
+  double coverage = 1.0;        // share of [0,1]^2 covered by the points' (u,v)
+  std::size_t clamped_points = 0;  // points outside the boundary by more than h, clamped onto the domain's edge
   double seconds = 0.0;
   /// Wall-clock time of each stage (their sum is about `seconds`).
   struct StageSeconds {

@@ -1,4 +1,4 @@
-/* Progress and level callbacks: what they receive, on which thread, and cancellation. */
+/* Progress, level and warning callbacks: what they receive, on which thread, and cancellation. */
 #define _POSIX_C_SOURCE 200809L /* pthread_self */
 #include <math.h>
 #include <pthread.h>
@@ -239,6 +239,64 @@ static struct level_log *new_level_log(void) {
   return log;
 }
 
+struct warning_log {
+  char messages[8][512];
+  size_t calls;
+  int wrong_thread;
+  pthread_t caller;
+};
+
+static void record_warning(const char *message, void *payload) {
+  struct warning_log *log = payload;
+  if (!pthread_equal(pthread_self(), log->caller)) log->wrong_thread = 1;
+  if (log->calls < 8) snprintf(log->messages[log->calls], sizeof log->messages[0], "%s", message);
+  ++log->calls;
+}
+
+static void warnings_name_mismatched_inputs(void **state) {
+  struct run *r = *state;
+  struct warning_log log = {.calls = 0, .wrong_thread = 0, .caller = pthread_self()};
+  assert_ok(dbs_options_set_warning(r->options, record_warning, &log));
+  /* The plane and its own boundary: nothing to say. */
+  dbs_result *result = parameterize_or_fail(r->cloud, r->boundary, r->options);
+  dbs_result_destroy(result);
+  assert_int_equal(log.calls, 0);
+  /* The same plane, its boundary in other units (1000 times smaller, at the same corner):
+     the scale ratio and the points clamped outside it are both named, with their numbers;
+     the run goes on. */
+  const double w = PLANE_W / 1000, h = PLANE_H / 1000, z = PLANE_Z;
+  const double bottom[] = {0, 0, z, w, 0, z}, right[] = {w, 0, z, w, h, z}, top[] = {0, h, z, w, h, z}, left[] = {0, 0, z, 0, h, z};
+  dbs_boundary *tiny = NULL;
+  assert_ok(dbs_boundary_create(bottom, 2, right, 2, top, 2, left, 2, &tiny));
+  result = parameterize_or_fail(r->cloud, tiny, r->options);
+  assert_int_equal(log.calls, 2);
+  assert_false(log.wrong_thread);
+  assert_non_null(strstr(log.messages[0], "the cloud is 1e+3 times the size of the boundary"));
+  assert_non_null(strstr(log.messages[0], "same units"));
+  assert_non_null(strstr(log.messages[1], " of 66 points lie outside the boundary by more than a point spacing and were clamped onto the domain's edge"));
+  double ratio = 0.0, clamped = 0.0;
+  assert_ok(dbs_result_stat(result, DBS_STAT_SCALE_RATIO, &ratio));
+  assert_ok(dbs_result_stat(result, DBS_STAT_CLAMPED_POINTS, &clamped));
+  assert_true(fabs(ratio - 1000.0) < 1e-6);
+  assert_true(clamped >= 60 && clamped <= 66);
+  dbs_result_destroy(result);
+  /* A clone carries the callback; cleared, it is not called. */
+  dbs_options *copy = NULL;
+  assert_ok(dbs_options_clone(r->options, &copy));
+  log.calls = 0;
+  result = parameterize_or_fail(r->cloud, tiny, copy);
+  dbs_result_destroy(result);
+  assert_int_equal(log.calls, 2);
+  assert_ok(dbs_options_set_warning(copy, NULL, &log));
+  log.calls = 0;
+  result = parameterize_or_fail(r->cloud, tiny, copy);
+  dbs_result_destroy(result);
+  assert_int_equal(log.calls, 0);
+  dbs_options_destroy(copy);
+  dbs_boundary_destroy(tiny);
+  assert_failure(dbs_options_set_warning(NULL, record_warning, &log), DBS_ERR_NULL_ARGUMENT, "dbs_options_set_warning", "options");
+}
+
 static void level_callback_sees_every_level(void **state) {
   const struct run *r = *state;
   dbs_cloud *cloud = r->cloud;
@@ -299,6 +357,7 @@ int main(void) {
       cmocka_unit_test_setup_teardown(progress_can_cancel_at_any_call, subdividing_setup, run_teardown),
       cmocka_unit_test_setup_teardown(cleared_progress_is_not_called, plane_setup, run_teardown),
       cmocka_unit_test_setup_teardown(clones_carry_the_callbacks, plane_setup, run_teardown),
+      cmocka_unit_test_setup_teardown(warnings_name_mismatched_inputs, plane_setup, run_teardown),
       cmocka_unit_test_setup_teardown(level_callback_sees_every_level, subdividing_setup, run_teardown),
       cmocka_unit_test_setup_teardown(level_callback_can_cancel, subdividing_setup, run_teardown),
   };

@@ -136,9 +136,15 @@ static void statistics(void **state) {
   /* a smooth fixture squeezes nothing */
   assert_true(result_stat(f->result, DBS_STAT_COLLAPSED_POINTS) == 0);
 
+  /* The inputs fit each other: the boundary on the cloud's rim, the same size, the domain covered. */
+  assert_true(result_stat(f->result, DBS_STAT_BOUNDARY_GAP) <= 2.0);
+  assert_true(fabs(result_stat(f->result, DBS_STAT_SCALE_RATIO) - 1.0) < 1e-12);
+  assert_true(result_stat(f->result, DBS_STAT_COVERAGE) == 1.0);
+  assert_true(result_stat(f->result, DBS_STAT_CLAMPED_POINTS) == 0);
+
   double value = -7;
-  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 29)");
-  assert_failure(dbs_result_stat(f->result, 29, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 29 ");
+  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 33)");
+  assert_failure(dbs_result_stat(f->result, 33, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 33 ");
   assert_true(value == -7);
 }
 
