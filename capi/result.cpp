@@ -58,9 +58,10 @@ double stat_value(const dbs::Result& r, int32_t stat) {
     case DBS_STAT_SCALE_RATIO: return r.scale_ratio;
     case DBS_STAT_COVERAGE: return r.coverage;
     case DBS_STAT_CLAMPED_POINTS: return static_cast<double>(r.clamped_points);
+    case DBS_STAT_FAR_POINTS: return static_cast<double>(r.far_points);
     default: break;
   }
-  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_CLAMPED_POINTS + 1) + ")");
+  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_FAR_POINTS + 1) + ")");
 }
 
 }  // namespace

@@ -303,7 +303,7 @@ typedef struct dbs_options dbs_options;
  * rules (initial grid <= max grid, own <= near), order matters: raise DBS_OPT_MAX_GRID before
  * setting DBS_OPT_INITIAL_GRID above it. */
 #define DBS_OPT_ACCURACY 0          /* double; 0 = unset; >= 0. Mean-distance target in cloud units. */
-#define DBS_OPT_RELATIVE_ACCURACY 1 /* double; 1e-3; [1e-9, 1]. Target as a fraction of the diagonal of the cloud's bounding box, measured in the frame of the boundary's corners (so that a rigid motion does not change it), used while DBS_OPT_ACCURACY is 0. */
+#define DBS_OPT_RELATIVE_ACCURACY 1 /* double; 1e-3; [1e-9, 1]. Target as a fraction of the diagonal of the cloud's bounding box, measured in the frame of the boundary's corners (so that a rigid motion does not change it), used while DBS_OPT_ACCURACY is 0. Since 0.4 the box is that of the cloud's body: points far outside it (DBS_STAT_FAR_POINTS) do not count. */
 #define DBS_OPT_MAX_LEVEL 2         /* int; 4; [0, 8]. Quadtree depth; 0 = a single base surface. */
 #define DBS_OPT_INITIAL_GRID 3      /* int; 5; [3, 100]. Grid points per side of a new patch. */
 #define DBS_OPT_MAX_GRID 4          /* int; 11; [3, 200], >= initial grid. Largest grid before subdividing. */
@@ -493,6 +493,7 @@ DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, do
 #define DBS_STAT_SCALE_RATIO 30           /* \since 0.4: the cloud's bounding-box diagonal over the boundary's, a ratio (about 1 when the boundary surrounds its scan; beyond 10 or below 1/10 a warning asks whether they are in the same units) */
 #define DBS_STAT_COVERAGE 31              /* \since 0.4: the share of [0,1]^2 the points' (u,v) cover: cells of a grid with about 16 points per cell (at least 2 x 2, at most 256 x 256) holding a point, in [0,1]; below 0.75 a warning says the cloud covers only part of the boundary */
 #define DBS_STAT_CLAMPED_POINTS 32        /* \since 0.4: points whose (u,v) lies on the domain's edge while they are farther than a point spacing from the surface there (outside the boundary, clamped onto it), a count; beyond 1% of the points (and at least 10) a warning asks whether the scan is larger than its boundary */
+#define DBS_STAT_FAR_POINTS 33            /* \since 0.4: points far outside the cloud's body (beyond 10 times its extent from the box between its 1% and 99% coordinate quantiles in the boundary's corner frame: a 1e9 or 1e300 glitch next to a scan): left out of the relative target, the spacing, the surfaces, the repair, the fold measure and the distance statistics; each takes the (u,v), patch and level of its nearest point of the body and its finite distance to the surface there; a count, with a warning */
 /** One summary statistic (DBS_STAT_*) of the result, in the unit given beside its id.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (stat). \since 0.1 */
 DBS_API int dbs_result_stat(const dbs_result *result, int32_t stat, double *out);

@@ -57,6 +57,7 @@ module dbs
   integer(c_int32_t), parameter :: DBS_STAT_COLLAPSED_POINTS = 28
   integer(c_int32_t), parameter :: DBS_STAT_BOUNDARY_GAP = 29, DBS_STAT_SCALE_RATIO = 30
   integer(c_int32_t), parameter :: DBS_STAT_COVERAGE = 31, DBS_STAT_CLAMPED_POINTS = 32
+  integer(c_int32_t), parameter :: DBS_STAT_FAR_POINTS = 33
 
   ! ---- validation: meshes, distortion, distances ----------------------------------------
   real(c_double), parameter :: DBS_MESH_SUSPICIOUS_FACTOR = 4.0_c_double

@@ -270,8 +270,10 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
   result.repaired.assign(n, 0);
   std::vector<char> is_far(n, 0);
   bool any_far = false;
+  // Points far outside the cloud's body are neither repaired nor fitted (nor data of a fit).
+  auto outside = [&](std::size_t i) { return i < result.outside_body.size() && result.outside_body[i]; };
   for (std::size_t i = 0; i < n; ++i) {
-    is_far[i] = result.distance[i] > kRepairFactor * result.accuracy && result.distance[i] > kRepairSpacings * result.length_scale;
+    is_far[i] = !outside(i) && result.distance[i] > kRepairFactor * result.accuracy && result.distance[i] > kRepairSpacings * result.length_scale;
     any_far = any_far || is_far[i];
   }
   bool any_doubt = false;
@@ -281,13 +283,14 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
   const std::vector<char> suspect = suspect_points(index, points, fold_state, is_far, threads);
   std::vector<std::size_t> far;
   for (std::size_t i = 0; i < n; ++i)
-    if (is_far[i] || suspect[i]) far.push_back(i);
+    if ((is_far[i] || suspect[i]) && !outside(i)) far.push_back(i);
   if (far.empty() || far.size() == n) return {};  // nothing to repair, or nothing to repair from
 
   // Gross outliers are left where they are and out of the refit: a harmonic fill would give
   // them the (u,v) of the surface under them anyway, and a fit through them would pull the
   // surface off the clean points.
   std::vector<char> outlier(n, 0);
+  for (std::size_t i = 0; i < n; ++i) outlier[i] = outside(i) ? 1 : 0;
   parallel_for(far.size(), threads, [&](std::size_t f) {
     if (is_far[far[f]]) outlier[far[f]] = isolated(index, points, far[f], result.distance[far[f]], result.length_scale) ? 1 : 0;
   });

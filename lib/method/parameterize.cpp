@@ -13,6 +13,7 @@
 #include "error.hpp"
 #include "evolve.hpp"
 #include "fold_measure.hpp"
+#include "cloud_body.hpp"
 #include "fold_repair.hpp"
 #include "input_checks.hpp"
 #include "noise_estimate.hpp"
@@ -62,23 +63,19 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 /// so each level gets half of what is left).
 double level_progress_end(int level) { return kIndexEnd + (kLevelsEnd - kIndexEnd) * (1.0 - std::pow(0.5, level + 1)); }
 
-/// The cloud's bounding-box diagonal in the frame of the boundary's corners, so that a rigid
-/// motion of the input does not change the relative accuracy.
-double cloud_size(const PointCloud& cloud, const Boundary& boundary) {
-  CornerFrameBox box(boundary);
-  for (const Vec3& p : cloud.points()) box.extend(p);
-  return box.diagonal();
-}
-
 class Driver {
  public:
   Driver(const PointCloud& cloud, const Boundary& boundary, const Options& options)
       : points_(cloud.points()), boundary_(boundary), options_(options), progress_(options.progress), threads_(resolve_threads(options.threads)) {
     meter_.set_report([this] { report_work(); });
-    result_.requested_accuracy = options.accuracy > 0.0 ? options.accuracy : options.relative_accuracy * cloud_size(cloud, boundary);
+    // Points far outside the cloud's body (cloud_body.hpp) decide nothing: not the relative
+    // target, nor the spacing, nor any surface; they are placed after the others.
+    body_ = cloud_body(points_, boundary);
+    result_.outside_body = body_.far;
+    result_.far_points = points_.size() - body_.body.size();
+    result_.requested_accuracy = options.accuracy > 0.0 ? options.accuracy : options.relative_accuracy * body_.diagonal;
     Patch root{BaseSurface(boundary)};
-    root.subcloud.resize(points_.size());
-    std::iota(root.subcloud.begin(), root.subcloud.end(), std::size_t{0});
+    root.subcloud = body_.body;
     result_.patches.push_back(std::move(root));
   }
 
@@ -87,7 +84,7 @@ class Driver {
     begin_stage("index", 0.0, kIndexEnd, 20000);  // the noise estimate's fits, about
     // The root's subcloud is the whole cloud in input order, so this index (the same tree as
     // one over that subcloud) also serves the root's evolution and subdivision.
-    cloud_index_ = std::make_unique<CloudIndex>(points_);
+    cloud_index_ = result_.far_points == 0 ? std::make_unique<CloudIndex>(points_) : std::make_unique<CloudIndex>(points_, body_.body);
     const NoiseEstimate noise = estimate_noise(*cloud_index_, threads_, &meter_);
     result_.length_scale = noise.spacing;
     result_.noise = noise.sigma;
@@ -95,6 +92,7 @@ class Driver {
     if (!(result_.length_scale > 0.0)) fail(ErrorCode::Degenerate, "the cloud's points all coincide (length scale 0)");
     check_boundary_against_cloud(*cloud_index_, boundary_, result_.length_scale, checks_);
     warn(boundary_warnings(checks_));
+    if (result_.far_points > 0) warn({far_points_warning()});
     // The noise floor: a surface lying exactly on the true surface scores a mean distance of
     // about sigma sqrt(2/pi) against points with Gaussian noise sigma along the normal; a
     // target below that can only be met by following the noise (leaves tilting, subdividing
@@ -112,6 +110,7 @@ class Driver {
     }
     const auto parameterize_start = Clock::now();
     project_across_borders();
+    place_far_points();
     // Judged on the feet, before the repair gives far points their neighbours' (u,v).
     check_parameters(result_, checks_);
     warn(parameter_warnings(checks_, points_.size()));
@@ -282,13 +281,15 @@ class Driver {
   /// the input order (a sparser cloud of the same surface: the measure sizes its
   /// neighbourhoods from the spacing), so that it costs a bounded share of a large run.
   FoldMeasure judge_folds(std::vector<std::size_t>& judged) {
-    const std::size_t n = points_.size();
+    // Of the body only: `judged` lists them, left empty when they are all the points.
+    const std::vector<std::size_t>& body = body_.body;
+    const std::size_t n = body.size(), count = std::min(n, kFoldJudgedPoints);
     judged.clear();
-    if (n <= kFoldJudgedPoints) return measure_folds(points_, result_.u, result_.v, result_.noise, threads_, &meter_);
+    if (n == points_.size() && n <= kFoldJudgedPoints) return measure_folds(points_, result_.u, result_.v, result_.noise, threads_, &meter_);
     std::vector<Vec3> points;
     std::vector<double> u, v;
-    for (std::size_t k = 0; k < kFoldJudgedPoints; ++k) {
-      const std::size_t i = static_cast<std::size_t>(static_cast<unsigned long long>(k) * n / kFoldJudgedPoints);
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::size_t i = body[static_cast<std::size_t>(static_cast<unsigned long long>(k) * n / count)];
       judged.push_back(i);
       points.push_back(points_[i]);
       u.push_back(result_.u[i]);
@@ -386,7 +387,7 @@ class Driver {
     // it is treated like a clamped point: it tries every leaf below.
     std::vector<std::size_t> clamped;
     for (std::size_t i = 0; i < n; ++i)
-      if (!inside_[i]) clamped.push_back(i);
+      if (!inside_[i] && !body_.far[i]) clamped.push_back(i);
     if (clamped.empty()) return;
     if (leaves.size() == 1) {
       std::vector<std::size_t> missed;
@@ -450,13 +451,15 @@ class Driver {
   }
 
   void summarize() {
+    // Over the body: a point far outside it would be the whole mean.
     double sum = 0.0, sum2 = 0.0, max = 0.0;
-    for (double d : result_.distance) {
+    for (std::size_t i : body_.body) {
+      const double d = result_.distance[i];
       sum += d;
       sum2 += d * d;
       max = std::max(max, d);
     }
-    const double n = static_cast<double>(result_.distance.size());
+    const double n = static_cast<double>(body_.body.size());
     result_.mean_distance = sum / n;
     result_.rms_distance = std::sqrt(sum2 / n);
     result_.max_distance = max;
@@ -486,6 +489,42 @@ class Driver {
     progress_.report(fraction, stage);
   }
 
+  /// Points far outside the body take the (u,v), patch and level of their nearest point of
+  /// the body, and their distance to the surface there (finite: no squares).
+  void place_far_points() {
+    if (result_.far_points == 0) return;
+    const CloudIndex body(points_, body_.body);
+    // Queried from as far away as the body reaches, in the point's direction: squares of
+    // the point's own distance may overflow.
+    Box3 body_box;
+    for (std::size_t i : body_.body) body_box.extend(points_[i]);
+    const Vec3 centre = 0.5 * (body_box.min + body_box.max);
+    const double reach = kFarOutside * std::max(body_box.diagonal(), boundary_.size());
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      if (!body_.far[i]) continue;
+      const Vec3 away = points_[i] - centre;
+      const double length = away.stableNorm();
+      const Vec3 query = length > reach ? Vec3(centre + away * (reach / length)) : points_[i];
+      const std::size_t j = body.nearest(query);
+      result_.u[i] = result_.u[j];
+      result_.v[i] = result_.v[j];
+      result_.patch[i] = result_.patch[j];
+      result_.level[i] = result_.level[j];
+      result_.distance[i] = (points_[i] - result_.evaluate(result_.u[i], result_.v[i])).stableNorm();
+    }
+  }
+
+  /// The warning for points far outside the body, with the farthest distance.
+  std::string far_points_warning() const {
+    double farthest = 0.0;
+    const Vec3 centre = 0.5 * (boundary_.bounds().min + boundary_.bounds().max);
+    for (std::size_t i = 0; i < points_.size(); ++i)
+      if (body_.far[i]) farthest = std::max(farthest, (points_[i] - centre).stableNorm());
+    return std::to_string(result_.far_points) + " point(s) lie far outside the cloud (beyond " + format_number(kFarOutside) +
+           " times its extent; the farthest " + significant_text(farthest, 3) +
+           " from the boundary's centre): left out of the target, the spacing, the surfaces and the distance statistics, each takes the (u,v) of its nearest point";
+  }
+
   /// Each message to the warning callback, if any (on the calling thread).
   void warn(const std::vector<std::string>& messages) const {
     if (!options_.warning) return;
@@ -513,6 +552,7 @@ class Driver {
   const Boundary& boundary_;
   const Options& options_;
   InputChecks checks_;
+  CloudBody body_;
   Progress progress_;
   WorkMeter meter_;
   std::unique_ptr<CloudIndex> cloud_index_;  // the whole cloud's, until the root is split

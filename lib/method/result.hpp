@@ -42,6 +42,10 @@ struct Result {
   double scale_ratio = 1.0;     // the cloud's size / the boundary's
   double coverage = 1.0;        // share of [0,1]^2 covered by the points' (u,v)
   std::size_t clamped_points = 0;  // points outside the boundary by more than h, clamped onto the domain's edge
+  /// Per point: 1 when far outside the cloud's body (cloud_body.hpp): it took the (u,v) of its
+  /// nearest point of the body and is left out of the surfaces, the repair and the statistics.
+  std::vector<char> outside_body;
+  std::size_t far_points = 0;
   double seconds = 0.0;
   /// Wall-clock time of each stage (their sum is about `seconds`).
   struct StageSeconds {

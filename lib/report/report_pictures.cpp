@@ -167,7 +167,12 @@ RgbImage draw_distance_histogram(const std::vector<double>& distances, const Dis
   if (stats.max <= limit || !(limit > 0.0)) limit = stats.max;
   if (!(limit > 0.0)) limit = 1.0;  // all distances zero
   std::vector<std::size_t> bins(kBins, 0);
-  for (double d : distances) bins[std::min(kBins - 1, static_cast<int>(d / limit * kBins))] += 1;
+  for (double d : distances) {
+    // In doubles first: a distance far beyond the limit (a point far outside the cloud)
+    // would overflow an int.
+    const double x = d / limit * kBins;
+    bins[x >= 0.0 && x < kBins - 1 ? static_cast<int>(x) : x >= 0.0 ? kBins - 1 : 0] += 1;
+  }
   const std::size_t highest = std::max<std::size_t>(1, *std::max_element(bins.begin(), bins.end()));
 
   for (int b = 0; b < kBins; ++b) {
@@ -175,7 +180,7 @@ RgbImage draw_distance_histogram(const std::vector<double>& distances, const Dis
     int h = static_cast<int>(std::lround(static_cast<double>(bins[b]) / highest * plot_h));
     fill_rect(image, x0, top + plot_h - h, x1, top + plot_h, {70, 110, 170});
   }
-  auto x_of = [&](double d) { return left + static_cast<int>(std::lround(d / limit * plot_w)); };
+  auto x_of = [&](double d) { return left + static_cast<int>(std::lround(std::clamp(d / limit, 0.0, 1.0) * plot_w)); };
   if (tolerance <= limit) fill_rect(image, x_of(tolerance) - 1, top, x_of(tolerance) + 1, top + plot_h, {0, 160, 60});
   for (int y = top; y < top + plot_h; y += 6) fill_rect(image, x_of(stats.mean), y, x_of(stats.mean) + 2, y + 3, {240, 130, 0});
   frame_rect(image, left - 1, top - 1, left + plot_w, top + plot_h, kInk);

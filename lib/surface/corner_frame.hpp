@@ -17,6 +17,8 @@ class CornerFrameBox {
   explicit CornerFrameBox(const Boundary& boundary);
 
   void extend(const Vec3& p) { box_.extend(axes_ * p); }
+  /// p in the frame's axes (a rotation: distances are kept).
+  Vec3 local(const Vec3& p) const { return axes_ * p; }
   /// Diagonal of the box of the points added so far, in the frame.
   double diagonal() const { return box_.diagonal(); }
 

@@ -141,10 +141,11 @@ static void statistics(void **state) {
   assert_true(fabs(result_stat(f->result, DBS_STAT_SCALE_RATIO) - 1.0) < 1e-12);
   assert_true(result_stat(f->result, DBS_STAT_COVERAGE) == 1.0);
   assert_true(result_stat(f->result, DBS_STAT_CLAMPED_POINTS) == 0);
+  assert_true(result_stat(f->result, DBS_STAT_FAR_POINTS) == 0);
 
   double value = -7;
-  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 33)");
-  assert_failure(dbs_result_stat(f->result, 33, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 33 ");
+  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 34)");
+  assert_failure(dbs_result_stat(f->result, 34, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 34 ");
   assert_true(value == -7);
 }
 

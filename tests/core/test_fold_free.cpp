@@ -60,6 +60,7 @@ Run run(const FoldShape& shape, dbs::Options options = {}, double scale = 1.0) {
   Run r{dbs::parameterize(dbs::PointCloud(points_of(shape.xyz, scale)), boundary, options), {}, 0.0};
   for (const std::string& w : warnings) std::printf("%s: unexpected warning: %s\n", shape.name.c_str(), w.c_str());
   assert_true(warnings.empty());
+  assert_int_equal(r.result.far_points, 0);
   std::vector<double> uv, on_surface;
   for (std::size_t i = 0; i < r.result.u.size(); ++i) {
     uv.push_back(r.result.u[i]);

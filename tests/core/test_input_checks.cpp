@@ -113,6 +113,39 @@ void boundary_far_from_its_cloud(void**) {
   assert_true(has(c.warnings, "does it belong to this cloud?"));
 }
 
+void points_far_outside_decide_nothing(void**) {
+  // The saddle with glitches 1e9, 1e160 and 1e300 away (finite, the last near the largest
+  // doubles): left out of the target, the spacing and the surfaces, so every other point gets
+  // the (u,v) of the clean run; each takes the (u,v) of its nearest point and a finite
+  // distance; the statistics are those of the clean run; a warning names them.
+  const FoldShape s = dbs_folds::saddle();
+  const std::vector<Vec3> clean = points_of(s.xyz);
+  std::vector<Vec3> glitched = clean;
+  glitched.insert(glitched.begin() + 100, Vec3(1e9, 0.0, 0.0));
+  glitched.push_back(Vec3(-3e160, 2e160, 1e160));
+  glitched.push_back(Vec3(1e300, -1e300, 1e300));
+  const Checked a = run(clean, boundary_of(s)), b = run(glitched, boundary_of(s));
+  assert_int_equal(b.result.far_points, 3);
+  assert_int_equal(a.result.far_points, 0);
+  assert_true(b.result.requested_accuracy == a.result.requested_accuracy);
+  assert_true(b.result.length_scale == a.result.length_scale);
+  assert_true(b.result.mean_distance == a.result.mean_distance && b.result.max_distance == a.result.max_distance);
+  assert_true(has(b.warnings, "3 point(s) lie far outside the cloud (beyond 10 times its extent"));
+  for (std::size_t i = 0, k = 0; i < glitched.size(); ++i) {
+    assert_true(std::isfinite(b.result.distance[i]) && std::isfinite(b.result.u[i]) && std::isfinite(b.result.v[i]));
+    assert_true(b.result.patch[i] >= 0 && static_cast<std::size_t>(b.result.patch[i]) < b.result.patches.size());
+    if (b.result.outside_body[i]) {
+      assert_true(b.result.distance[i] > 1e8);
+      continue;
+    }
+    assert_true(b.result.u[i] == a.result.u[k] && b.result.v[i] == a.result.v[k] && b.result.distance[i] == a.result.distance[k]);
+    ++k;
+  }
+  // The 1e9 point lies along +x of the saddle: it takes the (u,v) of a point at the
+  // boundary's u = 1 side.
+  assert_true(b.result.u[100] > 0.95);
+}
+
 }  // namespace
 
 int main() {
@@ -122,6 +155,7 @@ int main() {
       cmocka_unit_test(cloud_covering_half_its_boundary),
       cmocka_unit_test(scan_larger_than_its_boundary),
       cmocka_unit_test(boundary_far_from_its_cloud),
+      cmocka_unit_test(points_far_outside_decide_nothing),
   };
   return cmocka_run_group_tests_name("input_checks", tests, nullptr, nullptr);
 }
