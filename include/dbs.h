@@ -56,7 +56,7 @@
  *    the result a lone call gives, bit for bit.
  *  - Calls that must not race (the caller synchronizes): a call taking a handle non-const
  *    (dbs_options_set_int, dbs_options_set_double, dbs_options_set_progress,
- *    dbs_options_set_level_callback) must not run while any other call uses the same handle
+ *    dbs_options_set_level_callback, dbs_options_set_warning) must not run while any other call uses the same handle
  *    (a dbs_parameterize or dbs_report_write reading those options included), and a
  *    *_destroy must not run while any other call uses that handle or a view borrowed from
  *    it (the dbs_patches of dbs_result_patches).
@@ -423,8 +423,11 @@ typedef struct dbs_result dbs_result;
  *  boundary found unusable: all points coincide, fewer than two distinct points, a zero
  *  direction or a middle curve of zero length met while projecting or subdividing),
  *  DBS_ERR_NUMERICAL (a projection system singular or without finite solution),
+ *  DBS_ERR_OUT_OF_RANGE (since 0.4: the cloud's body or the boundary is smaller than 1e-100
+ *  or larger than 1e75 across, the magnitudes supported, or a loss scale out of range),
  *  DBS_ERR_CANCELLED (a callback returned non-zero), DBS_ERR_NO_MEMORY, DBS_ERR_INTERNAL
- *  (a bug; also a worker thread that could not be started, see "Threads"). \since 0.1 */
+ *  (a bug; since 0.3 not a worker thread that could not be started, see "Threads").
+ *  \since 0.1 */
 DBS_API int dbs_parameterize(const dbs_cloud *cloud, const dbs_boundary *boundary, const dbs_options *options, dbs_result **out);
 /** Frees the result and its dbs_patches view; NULL is ignored. Not while another call uses
  *  the result or its view. \since 0.1 */

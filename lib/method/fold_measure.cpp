@@ -329,6 +329,12 @@ std::size_t count_coincident(const std::vector<double>& u, const std::vector<dou
   return count;
 }
 
+namespace {
+
+FoldMeasure measure_folds_at_unit_scale(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, double noise_sigma, int threads, WorkMeter* meter);
+
+}  // namespace
+
 FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, double noise_sigma, int threads, WorkMeter* meter) {
   check_sizes(points.size(), u, v, "measure_folds");
   if (!std::isfinite(noise_sigma)) fail(ErrorCode::NonFinite, "measure_folds: the noise level is not finite");
@@ -338,6 +344,22 @@ FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<dou
     if (!is_finite(points[i])) fail(ErrorCode::NonFinite, "measure_folds: point " + std::to_string(i) + " is not finite");
     if (!std::isfinite(u[i]) || !std::isfinite(v[i])) fail(ErrorCode::NonFinite, "measure_folds: the (u,v) of point " + std::to_string(i) + " is not finite");
   }
+  // Products of four lengths (the determinant of the tangent moments) under- or overflow for
+  // a cloud 1e-100 or 1e75 across: such a cloud is judged scaled by a power of two near the
+  // inverse of its size, which is exact, so the verdicts are those of the same cloud at unit
+  // size. Clouds of ordinary sizes are judged as they are.
+  const double size = bounds_of(points).diagonal();
+  if (!(size > 0.0) || (size >= 0x1p-20 && size <= 0x1p20)) return measure_folds_at_unit_scale(points, u, v, noise_sigma, threads, meter);
+  const double scale = std::ldexp(1.0, -std::ilogb(size));
+  std::vector<Vec3> scaled(points.size());
+  for (std::size_t i = 0; i < n; ++i) scaled[i] = points[i] * scale;
+  return measure_folds_at_unit_scale(scaled, u, v, noise_sigma * scale, threads, meter);
+}
+
+namespace {
+
+FoldMeasure measure_folds_at_unit_scale(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, double noise_sigma, int threads, WorkMeter* meter) {
+  const std::size_t n = points.size();
 
   FoldMeasure m;
   m.points = n;
@@ -429,6 +451,8 @@ FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<dou
   m.folded_share = decided == 0 ? 0.0 : static_cast<double>(m.folded) / static_cast<double>(decided);
   return m;
 }
+
+}  // namespace
 
 std::vector<std::int8_t> spread_verdicts(const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter) {
   if (judged.size() != state.size() || judged.empty())

@@ -45,6 +45,9 @@ constexpr double kLossScaleSigmas = 3.0;
 /// The loss scales accepted, in units of h.
 constexpr double kMinLossScale = 1e-6, kMaxLossScale = 1e6;
 
+/// The sizes of clouds and boundaries supported (bounding-box diagonals, in any unit).
+constexpr double kMinSize = 1e-100, kMaxSize = 1e75;
+
 /// Most points the fold measure judges (about 0.1 s: the measure takes about 1.2 s per 100k points).
 constexpr std::size_t kFoldJudgedPoints = 10000;
 
@@ -71,6 +74,12 @@ class Driver {
     // Points far outside the cloud's body (cloud_body.hpp) decide nothing: not the relative
     // target, nor the spacing, nor any surface; they are placed after the others.
     body_ = cloud_body(points_, boundary);
+    // The magnitudes supported: within them every product the method forms stays a normal
+    // double (tried from 1e-100 to 1e75; 1e100 overflows the fourth powers of some fits).
+    for (const auto& [what, size] : {std::pair<const char*, double>{"cloud", body_.diagonal}, {"boundary", boundary.size()}})
+      if (size != 0.0 && !(size >= kMinSize && size <= kMaxSize))  // 0: coincident points, refused below
+        fail(ErrorCode::OutOfRange, std::string("the ") + what + "'s size (bounding-box diagonal) " + format_number(size) + " is outside the supported range [" +
+                                        format_number(kMinSize) + ", " + format_number(kMaxSize) + "]: scale the input");
     result_.outside_body = body_.far;
     result_.far_points = points_.size() - body_.body.size();
     result_.requested_accuracy = options.accuracy > 0.0 ? options.accuracy : options.relative_accuracy * body_.diagonal;

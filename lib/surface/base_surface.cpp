@@ -78,9 +78,13 @@ Vec3 BaseSurface::normal(double u, double v) const {
   const double du_sign = u < 0.5 ? 1.0 : -1.0, dv_sign = v < 0.5 ? 1.0 : -1.0;
   for (double step : {0.0, 1e-7, 1e-5, 1e-3, 1e-2, 1e-1}) {
     const SurfacePoint sp = eval_derivs(u + du_sign * step, v + dv_sign * step);
-    const Vec3 n = sp.du.cross(sp.dv);
+    // Of the unit derivatives: the cross product of derivatives of a patch 1e100 across
+    // would overflow (and of one 1e-100 across underflow).
+    const double lu = sp.du.norm(), lv = sp.dv.norm();
+    if (!(lu > 0.0) || !(lv > 0.0)) continue;
+    const Vec3 n = (sp.du / lu).cross(sp.dv / lv);
     const double len = n.norm();
-    if (len > 1e-10 * sp.du.norm() * sp.dv.norm() && len > 0.0) return n / len;
+    if (len > 1e-10) return n / len;
   }
   fail(ErrorCode::Numerical, "surface normal undefined near (u=" + std::to_string(u) + ", v=" + std::to_string(v) + ")");
 }

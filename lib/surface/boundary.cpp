@@ -119,13 +119,16 @@ double checked_size(const Box3& box) {
 
 // Unsigned area of the boundary's Coons patch, from a sampled triangulation. A boundary
 // whose sides are collinear, or fold back onto each other, spans (almost) none.
-double coons_area(const Boundary& boundary) {
+double coons_area(const Boundary& boundary, double size) {
   constexpr int n = 8;
   const CoonsPatch coons(boundary);
+  // In units of the boundary's size, so that the cross products of a boundary 1e-100 across
+  // do not underflow (nor of one 1e100 across overflow); the area is scaled back at the end.
+  const Vec3 origin = boundary.corner(0, 0);
   std::vector<Vec3> samples;
   samples.reserve((n + 1) * (n + 1));
   for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) samples.push_back(coons.eval(static_cast<double>(i) / n, static_cast<double>(j) / n));
+    for (int i = 0; i <= n; ++i) samples.push_back((coons.eval(static_cast<double>(i) / n, static_cast<double>(j) / n) - origin) / size);
   double area = 0.0;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
@@ -135,16 +138,15 @@ double coons_area(const Boundary& boundary) {
       const Vec3& p11 = samples[(j + 1) * (n + 1) + i + 1];
       area += 0.5 * ((p10 - p00).cross(p11 - p00).norm() + (p11 - p00).cross(p01 - p00).norm());
     }
-  return area;
+  return area;  // in units of size^2
 }
 
 // The spanned area is compared with size^2: its mean width (area / size) must exceed the
 // corner tolerance, below which points of the boundary count as the same point.
 void check_area(const Boundary& boundary, double size) {
-  const double area = coons_area(boundary);
-  const double tol = Boundary::kCornerTolerance * size * size;
-  if (!(area > tol))
-    fail(ErrorCode::Degenerate, "boundary spans (almost) no area: its Coons patch has area " + format_number(area) + ", below " +
+  const double share = coons_area(boundary, size);  // of size^2
+  if (!(share > Boundary::kCornerTolerance))
+    fail(ErrorCode::Degenerate, "boundary spans (almost) no area: its Coons patch has area " + format_number(share * size * size) + ", below " +
                                     format_number(Boundary::kCornerTolerance) + " of the boundary size squared (" +
                                     format_number(size * size) + "); are its sides collinear or folded onto each other?");
 }

@@ -32,11 +32,13 @@ void singular_values(const Eigen::Matrix2d& m, double& s1, double& s2) {
   s2 = std::abs(q - r);
 }
 
-Edges edges_of(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, const Triangle& t) {
+/// The triangle's edges in units of `unit` (a typical edge length), so that the areas of a
+/// mesh 1e-100 across neither underflow nor those of one 1e75 across overflow.
+Edges edges_of(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, const Triangle& t, double unit) {
   Edges ed;
   const Vec3& a = points[t[0]];
-  ed.e1 = points[t[1]] - a;
-  ed.e2 = points[t[2]] - a;
+  ed.e1 = (points[t[1]] - a) / unit;
+  ed.e2 = (points[t[2]] - a) / unit;
   ed.normal = ed.e1.cross(ed.e2);
   ed.q << u[t[1]] - u[t[0]], u[t[2]] - u[t[0]], v[t[1]] - v[t[0]], v[t[2]] - v[t[0]];
   double det_q = ed.q.determinant();
@@ -122,13 +124,25 @@ Distortion measure_distortion(const std::vector<Vec3>& points, const std::vector
   if (u.size() != points.size() || v.size() != points.size()) fail(ErrorCode::InvalidArgument, "measure_distortion: " + std::to_string(points.size()) + " points but " + std::to_string(u.size()) + " u and " + std::to_string(v.size()) + " v values");
   if (!reference_normals.empty() && reference_normals.size() != triangles.size()) fail(ErrorCode::InvalidArgument, "measure_distortion: " + std::to_string(reference_normals.size()) + " reference normals for " + std::to_string(triangles.size()) + " triangles");
 
-  std::vector<Edges> edges(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     for (std::int32_t vertex : triangles[t]) {
       if (vertex < 0 || static_cast<std::size_t>(vertex) >= points.size()) fail(ErrorCode::OutOfRange, "triangle " + std::to_string(t) + " has vertex index " + std::to_string(vertex) + " outside the " + std::to_string(points.size()) + " points");
       if (!std::isfinite(u[vertex]) || !std::isfinite(v[vertex])) fail(ErrorCode::NonFinite, "parameter (u,v) of point " + std::to_string(vertex) + " (a vertex of triangle " + std::to_string(t) + ") is not finite");
     }
-    edges[t] = edges_of(points, u, v, triangles[t]);
+  }
+  // The unit of length: the median first edge (every measure is a ratio but the domain's
+  // scales, which are reported back in cloud units).
+  double unit = 1.0;
+  if (!triangles.empty()) {
+    std::vector<double> lengths(triangles.size());
+    for (std::size_t t = 0; t < triangles.size(); ++t) lengths[t] = (points[triangles[t][1]] - points[triangles[t][0]]).stableNorm();
+    std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2), lengths.end());
+    const double median = lengths[lengths.size() / 2];
+    if (median > 0.0 && std::isfinite(median)) unit = median;
+  }
+  std::vector<Edges> edges(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    edges[t] = edges_of(points, u, v, triangles[t], unit);
     if (!reference_normals.empty() && edges[t].normal.dot(reference_normals[t]) < 0.0) edges[t].orientation = -edges[t].orientation;
   }
 
@@ -177,6 +191,8 @@ Distortion measure_distortion(const std::vector<Vec3>& points, const std::vector
   s.sigma1 = summarize(std::move(sigma1));
   s.sigma2 = summarize(std::move(sigma2));
   s.mesh_stretch_l2 = area3_sum > 0.0 ? std::sqrt(stretch_sum / area3_sum) : 0.0;
+  s.scale_u *= unit;
+  s.scale_v *= unit;
   return result;
 }
 

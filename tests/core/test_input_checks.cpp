@@ -3,11 +3,15 @@
 // (a single patch, fast): a boundary in other units than the cloud, a cloud covering half of
 // its boundary, a scan larger than its boundary, a boundary far from its cloud. The controls
 // (the hard shapes, which must not warn) are every run of test_fold_free.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
 
+#include "delaunay_mesh.hpp"
+#include "distortion.hpp"
+#include "error.hpp"
 #include "fold_shapes.hpp"
 #include "input_checks.hpp"
 #include "number_text.hpp"
@@ -146,6 +150,40 @@ void points_far_outside_decide_nothing(void**) {
   assert_true(b.result.u[100] > 0.95);
 }
 
+void supported_magnitudes_work_and_others_are_refused(void**) {
+  // Sizes from 1e-100 to 1e75 work, the distortion of their Delaunay mesh included; beyond
+  // that range the run says so instead of failing with a geometry message.
+  const FoldShape s = dbs_folds::saddle();
+  const Checked unit = run(points_of(s.xyz), boundary_of(s));
+  const dbs::Distortion unit_distortion =
+      dbs::measure_distortion(points_of(s.xyz), unit.result.u, unit.result.v, dbs::delaunay_triangulate(unit.result.u, unit.result.v), dbs::DomainScaling::PerAxis, {});
+  for (double scale : {1e-100 / s.diagonal, 1e73 / s.diagonal}) {
+    const Checked c = run(points_of(s.xyz, scale), boundary_of(s, scale));
+    double worst = 0.0;
+    for (std::size_t i = 0; i < s.count(); ++i) worst = std::max({worst, std::abs(c.result.u[i] - unit.result.u[i]), std::abs(c.result.v[i] - unit.result.v[i])});
+    std::printf("size %.3g: (u,v) within %.3g of the unit run's, %zu folded\n", scale * s.diagonal, worst, c.result.folded_points);
+    assert_true(worst < 1e-3);
+    assert_int_equal(c.result.folded_points, 0);
+    assert_true(c.warnings.empty());
+    const std::vector<Vec3> points = points_of(s.xyz, scale);
+    const std::vector<dbs::Triangle> triangles = dbs::delaunay_triangulate(c.result.u, c.result.v);
+    const dbs::Distortion d = dbs::measure_distortion(points, c.result.u, c.result.v, triangles, dbs::DomainScaling::PerAxis, {});
+    assert_int_equal(d.summary.degenerate, 0);
+    assert_int_equal(d.summary.folded, unit_distortion.summary.folded);
+    assert_true(std::abs(d.summary.conformal.p95 - unit_distortion.summary.conformal.p95) < 1e-3);
+    assert_true(std::abs(d.summary.scale_u / (scale * unit_distortion.summary.scale_u) - 1.0) < 1e-3);
+  }
+  for (double scale : {1e-110, 1e80}) {
+    bool refused = false;
+    try {
+      run(points_of(s.xyz, scale), boundary_of(s, scale));
+    } catch (const dbs::Error& e) {
+      refused = e.code() == dbs::ErrorCode::OutOfRange && std::string(e.what()).find("is outside the supported range [1e-100, 1e+75]: scale the input") != std::string::npos;
+    }
+    assert_true(refused);
+  }
+}
+
 }  // namespace
 
 int main() {
@@ -156,6 +194,7 @@ int main() {
       cmocka_unit_test(scan_larger_than_its_boundary),
       cmocka_unit_test(boundary_far_from_its_cloud),
       cmocka_unit_test(points_far_outside_decide_nothing),
+      cmocka_unit_test(supported_magnitudes_work_and_others_are_refused),
   };
   return cmocka_run_group_tests_name("input_checks", tests, nullptr, nullptr);
 }
