@@ -212,9 +212,9 @@ void noise_does_not_change_the_level_count(void**) {
 
 void hard_shapes_stay_within_their_bounds(void**) {
   // Folded reference triangles and mean distance with the default options (the repair on,
-  // since 0.4): a little above today's figures, mushroom 0.12% / 0.0047, tall dome 0.18% /
-  // 0.011, fingers 2.76% / 0.0060, open box 0.18% / 0.0007, cone 0.25% / 0.00071 (0.45% /
-  // 0.00082 before the repair took the points the fold measure doubts), sphere cap 0.10% / 0.0032. The same without the repair (the default of 0.3): 7.23% / 0.0208, 8.24% /
+  // since 0.4): a little above today's figures, mushroom 0.06% / 0.0049, tall dome 0.13% /
+  // 0.011, fingers 2.76% / 0.0060, open box 0.18% / 0.0007, cone 0.26% / 0.00071 (0.45% /
+  // 0.00082 before the repair took the points the fold measure doubts), sphere cap 0.06% / 0.0031. The same without the repair (the default of 0.3): 7.23% / 0.0208, 8.24% /
   // 0.0183, 3.62% / 0.0080, 0.18% / 0.0021, 0.77% / 0.0014, 0.10% / 0.0033; before the guard,
   // the seam correction and the seam-aware assignment (0.2): 9.65%, 7.37%, 4.08%, 0.21%,
   // 1.27%, 2.30%. The repair is on by default because it keeps or lowers both figures on
@@ -223,7 +223,7 @@ void hard_shapes_stay_within_their_bounds(void**) {
     const char* name;
     double max_share, max_mean;
   } bounds[] = {{"mushroom", 0.002, 0.006}, {"tall-dome", 0.003, 0.013}, {"fingers", 0.030, 0.007},
-                {"open-box", 0.0025, 0.001}, {"cone", 0.003, 0.001}, {"sphere-cap", 0.003, 0.0034}};
+                {"open-box", 0.0025, 0.001}, {"cone", 0.004, 0.001}, {"sphere-cap", 0.003, 0.0034}};
   dbs::Options without;
   without.repair = 0;
   for (const auto& b : bounds) {
@@ -247,20 +247,20 @@ void hard_shapes_stay_within_their_bounds(void**) {
 void sphere_cap_against_the_meshless_reference(void**) {
   // 270 degrees of a sphere, open only at its rim: no failure; the issue asks for no more
   // folds than a meshless method (k = 12 inverse-distance weights, one solve) on the same
-  // points. That is not met yet: the bound is a little above today's figure (0.10% against
-  // the meshless 0.06%), so this checks only that it does not get worse.
+  // points. Met since the repair takes the points the fold measure doubts: 5 folded
+  // triangles (0.06%) against the meshless 5 (0.10% before, 0.19% without the repair).
   const FoldShape shape = dbs_folds::sphere_cap();
   const Run r = run(shape);
   const dbs_folds::MeshlessReference meshless = dbs_folds::meshless_reference(shape);
   const dbs_folds::FoldCount reference = dbs_folds::fold_share(meshless.uv, shape.triangles);
   std::printf("sphere cap: libdbs %.2f%%, meshless %.2f%%\n", 100.0 * r.folds.share, 100.0 * reference.share);
   assert_true(reference.share <= 0.002);
-  assert_true(r.folds.share <= 0.003);
+  assert_true(r.folds.folded <= reference.folded);
 }
 
 void repair_on_the_hard_shapes(void**) {
-  // The last-resort repair on the two shapes whose points the surfaces reach least: 7.23% and
-  // 8.24% folded without it.
+  // The last-resort repair on the two shapes whose points the surfaces reach least: 7.70% and
+  // 8.90% folded without it.
   dbs::Options options;
   options.repair = 1;
   for (const char* name : {"mushroom", "tall-dome"}) {
@@ -287,10 +287,10 @@ void repair_at_scan_density(void**) {
   // The two hardest shapes at 2.5 times the points (about 10,000, the size of the scans the
   // fold-free work is judged on), where the surfaces come close to more of the cloud but
   // pleat between leaves and scatter the points of steep walls in (u,v). Today: mushroom
-  // 1.41% folded (3.61% without the repair, 3.00% with the repair of far points only),
-  // tall dome 1.73% (5.21%, 4.94%); the repair must keep at least half of them off and not
-  // raise the mean distance above the one without it (mushroom 0.00149 against 0.00205, dome
-  // 0.00097 against 0.00119).
+  // 1.31% folded (4.32% without the repair; 3.00% with the repair of far points only, before
+  // the normal change), tall dome 1.89% (5.28%, 4.94%); the repair must keep at least half of
+  // them off and not raise the mean distance above the one without it (mushroom 0.00136
+  // against 0.0035, dome 0.00096 against 0.00118).
   const struct {
     const char* name;
     double max_share;
