@@ -42,8 +42,9 @@ int dbs_boundary_create_tolerant(const double* bottom, size_t n_bottom, const do
     require_non_null(left, "left");
     require_non_null(out, "out");
     dbs::Boundary boundary(points_from(bottom, n_bottom), points_from(right, n_right), points_from(top, n_top), points_from(left, n_left), corner_tolerance(tolerance, relative));
-    if (out_max_snap) *out_max_snap = boundary.max_snap();
+    const double snap = boundary.max_snap();
     *out = new dbs_boundary{std::move(boundary)};
+    if (out_max_snap) *out_max_snap = snap;  // after the allocation: untouched on failure
   });
 }
 
@@ -52,8 +53,9 @@ int dbs_boundary_load_tolerant(const char* path, double tolerance, int32_t relat
     require_non_null(path, "path");
     require_non_null(out, "out");
     dbs::Boundary boundary = dbs::load_boundary(path, corner_tolerance(tolerance, relative));
-    if (out_max_snap) *out_max_snap = boundary.max_snap();
+    const double snap = boundary.max_snap();
     *out = new dbs_boundary{std::move(boundary)};
+    if (out_max_snap) *out_max_snap = snap;
   });
 }
 

@@ -265,8 +265,8 @@ DBS_API int dbs_boundary_load_tolerant(const char *path, double tolerance, int32
  *  reversed, its corner indices following it, gives the same boundary bit for bit); rotating
  *  the corner list rotates the domain. The sides hold the loop's own points and share the
  *  corner points exactly; then checked as dbs_boundary_create does.
- *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (fewer than 4 distinct points,
- *  corners repeated or not in cyclic order), DBS_ERR_OUT_OF_RANGE (a corner index not below
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (fewer than 4 points once a
+ *  repeated first point is dropped, corners repeated or not in cyclic order), DBS_ERR_OUT_OF_RANGE (a corner index not below
  *  n), DBS_ERR_NON_FINITE, DBS_ERR_DEGENERATE (as dbs_boundary_create),
  *  DBS_ERR_NO_MEMORY. \since 0.4 */
 DBS_API int dbs_boundary_from_loop(const double *xyz, size_t n, const size_t *corners, dbs_boundary **out);
@@ -400,9 +400,9 @@ DBS_API int dbs_options_set_level_callback(dbs_options *options, dbs_level_fn fn
 
 /** Called with one line naming a likely mistake in the inputs, each time one is found
  *  during dbs_parameterize: the boundary's size against the cloud's, its distance to the
- *  cloud (both before the run), the share of the domain the points cover and the points
- *  clamped onto the domain's edge (after it); see DBS_STAT_BOUNDARY_GAP and the three after
- *  it. The run goes on. The string is valid only during the call. Called on the thread that
+ *  cloud, points far outside the cloud's body (all before the run), the share of the domain
+ *  the points cover and the points clamped onto the domain's edge (after it); see
+ *  DBS_STAT_BOUNDARY_GAP and the four after it. The run goes on. The string is valid only during the call. Called on the thread that
  *  called dbs_parameterize; must return normally. \since 0.4 */
 typedef void (*dbs_warning_fn)(const char *message, void *payload);
 /** Sets (or with fn == NULL clears) the warning callback; `payload` as for
@@ -487,7 +487,7 @@ DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, do
 #define DBS_STAT_UNDECIDED_POINTS 21     /* \since 0.3: points whose neighbourhood is not surface-like enough to decide (not counted as folded), a count */
 #define DBS_STAT_COINCIDENT_POINTS 22    /* \since 0.3: points sharing one (u,v) with another point, a count */
 #define DBS_STAT_REPAIRED_POINTS 24      /* \since 0.3: points the last-resort repair gave their (u,v) (DBS_OPT_REPAIR), a count */
-#define DBS_STAT_JUDGED_POINTS 23        /* \since 0.3: points the fold measure judged: all of them up to 10,000, beyond that 10,000 evenly spread over the input order (the FOLDED/UNDECIDED/COINCIDENT counts are of these), a count */
+#define DBS_STAT_JUDGED_POINTS 23        /* \since 0.3: points the fold measure judged: all of them up to 20,000 (10,000 before 0.4), beyond that 20,000 evenly spread over the input order and over the cloud's body (the FOLDED/UNDECIDED/COINCIDENT counts are of these), a count */
 #define DBS_STAT_SOLVER 25                /* \since 0.4: the solver that ran, DBS_SOLVER_* */
 #define DBS_STAT_CERES_ITERATIONS 26      /* \since 0.4: Ceres iterations over all refined grid sections of all patches (0 with the linear solver), a count */
 #define DBS_STAT_LOSS_SCALE 27            /* \since 0.4: the scale of the robust loss used (DBS_OPT_LOSS_SCALE, or the derived one), cloud units; 0 without a loss or with the linear solver */

@@ -489,8 +489,8 @@ class Options(_Handle):
 
     def on_warning(self, function):
         """function(message): a likely mistake in the inputs (the boundary's size or distance
-        against the cloud, the domain's coverage, points clamped outside the boundary); the
-        run goes on. None clears it."""
+        against the cloud, points far outside the cloud, the domain's coverage, points
+        clamped outside the boundary); the run goes on. None clears it."""
 
         def adaptor(message, _payload):
             try:

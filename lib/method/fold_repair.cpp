@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 
 #include "cloud_index.hpp"
+#include "error.hpp"
 #include "fold_measure.hpp"
 #include "parallel.hpp"
 #include "spline_displacement.hpp"
@@ -161,6 +162,7 @@ std::vector<int> refit_repaired_leaves(Result& result, const std::vector<Vec3>& 
   std::vector<std::vector<std::size_t>> data(result.patches.size()), members(result.patches.size());
   std::vector<char> touched(result.patches.size(), 0);
   for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i < result.outside_body.size() && result.outside_body[i]) continue;  // placed after the repair
     const std::size_t leaf = static_cast<std::size_t>(result.leaf_at(result.u[i], result.v[i]));
     members[leaf].push_back(i);
     if (!outlier[i]) data[leaf].push_back(i);
@@ -213,17 +215,18 @@ bool at_cloud_border(const CloudIndex& index, const std::vector<Vec3>& points, s
   return offset.norm() > kBorderOffset * spread;
 }
 
-/// The suspect points of fold_state (see repair_folds) besides `far`, and the ring of their
-/// kRepairNeighbours nearest points: 1 for a point to repair.
-std::vector<char> suspect_points(const CloudIndex& index, const std::vector<Vec3>& points, const std::vector<std::int8_t>& fold_state, const std::vector<char>& far, int threads) {
+/// The suspect points among `candidates` (see doubtful_points), `state` and `far` indexed
+/// like `points` (entries of other points unused), the ring of their kRepairNeighbours
+/// nearest points in `index` included: 1 for a point to repair.
+std::vector<char> suspect_points(const CloudIndex& index, const std::vector<Vec3>& points, const std::vector<std::size_t>& candidates, const std::vector<std::int8_t>& state,
+                                 const std::vector<char>& far, int threads) {
   const std::size_t n = points.size();
   std::vector<char> doubtful(n, 0), suspect(n, 0);
-  for (std::size_t i = 0; i < n; ++i) doubtful[i] = far[i] || (i < fold_state.size() && fold_state[i] != kFoldOk);
-  if (fold_state.empty()) return suspect;
-  parallel_for(n, threads, [&](std::size_t i) {
-    const std::int8_t state = fold_state[i];
-    if (far[i] || state == kFoldOk) return;
-    if (state == kFolded || state == kFoldCollapsed) {
+  for (std::size_t i : candidates) doubtful[i] = far[i] || state[i] != kFoldOk;
+  parallel_for(candidates.size(), threads, [&](std::size_t c) {
+    const std::size_t i = candidates[c];
+    if (far[i] || state[i] == kFoldOk) return;
+    if (state[i] == kFolded || state[i] == kFoldCollapsed) {
       suspect[i] = 1;
       return;
     }
@@ -236,17 +239,18 @@ std::vector<char> suspect_points(const CloudIndex& index, const std::vector<Vec3
     index.knn(points[i], kRepairNeighbours + 1, ids, d2);
     std::size_t others = 0;
     for (std::size_t m : ids) others += (m != i && doubtful[m]) ? 1 : 0;
-    if (state != kFoldScrambled && static_cast<double>(others) < kSuspectClusterShare * static_cast<double>(ids.size() - 1)) return;
+    if (state[i] != kFoldScrambled && static_cast<double>(others) < kSuspectClusterShare * static_cast<double>(ids.size() - 1)) return;
     suspect[i] = at_cloud_border(index, points, i) ? 0 : 1;
   });
   // One ring more: the fill's fixed points around a doubtful region are then sound ones, not
   // its own disturbed edge (the cloud's border stays out, as above).
-  std::vector<std::vector<std::size_t>> ring(n);
-  parallel_for(n, threads, [&](std::size_t i) {
+  std::vector<std::vector<std::size_t>> ring(candidates.size());
+  parallel_for(candidates.size(), threads, [&](std::size_t c) {
+    const std::size_t i = candidates[c];
     if (!suspect[i]) return;
     std::vector<double> d2;
-    index.knn(points[i], kRepairNeighbours + 1, ring[i], d2);
-    ring[i].erase(std::remove_if(ring[i].begin(), ring[i].end(), [&](std::size_t m) { return suspect[m] || far[m] || at_cloud_border(index, points, m); }), ring[i].end());
+    index.knn(points[i], kRepairNeighbours + 1, ring[c], d2);
+    ring[c].erase(std::remove_if(ring[c].begin(), ring[c].end(), [&](std::size_t m) { return suspect[m] || far[m] || at_cloud_border(index, points, m); }), ring[c].end());
   });
   std::vector<char> taken = suspect;
   for (const std::vector<std::size_t>& around : ring)
@@ -254,36 +258,64 @@ std::vector<char> suspect_points(const CloudIndex& index, const std::vector<Vec3
   return taken;
 }
 
-}  // namespace
-
-bool has_suspect_points(const std::vector<Vec3>& points, const std::vector<std::int8_t>& fold_state, int threads) {
-  bool any_doubt = false;
-  for (std::int8_t state : fold_state) any_doubt = any_doubt || state != kFoldOk;
-  if (!any_doubt || fold_state.size() != points.size()) return false;
-  const CloudIndex index(points);
-  const std::vector<char> suspect = suspect_points(index, points, fold_state, std::vector<char>(points.size(), 0), threads);
-  return std::find(suspect.begin(), suspect.end(), 1) != suspect.end();
+/// Per point: 1 when farther from its surface than the repair's "far" (and in the body).
+std::vector<char> far_from_surface(const Result& result) {
+  const std::size_t n = result.distance.size();
+  std::vector<char> far(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool outside = i < result.outside_body.size() && result.outside_body[i];
+    far[i] = !outside && result.distance[i] > kRepairFactor * result.accuracy && result.distance[i] > kRepairSpacings * result.length_scale;
+  }
+  return far;
 }
 
-Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::vector<std::int8_t>& fold_state, int threads) {
+}  // namespace
+
+std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter) {
+  const std::size_t n = points.size();
+  std::vector<char> none(n, 0);
+  if (std::find_if(state.begin(), state.end(), [](std::int8_t s) { return s != kFoldOk; }) == state.end()) return none;
+  const std::vector<char> far = far_from_surface(result);
+  if (judged.empty()) {
+    if (state.size() != n) fail(ErrorCode::InvalidArgument, "doubtful_points: " + std::to_string(state.size()) + " verdicts for " + std::to_string(n) + " points");
+    std::vector<std::size_t> all(n);
+    for (std::size_t i = 0; i < n; ++i) all[i] = i;
+    return suspect_points(CloudIndex(points), points, all, state, far, threads);
+  }
+  if (state.size() != judged.size()) fail(ErrorCode::InvalidArgument, "doubtful_points: " + std::to_string(state.size()) + " verdicts for " + std::to_string(judged.size()) + " judged points");
+  // The suspects of the judged points among themselves (the sparser cloud the verdicts are
+  // of), then each point takes the flag of its nearest judged point.
+  std::vector<std::int8_t> global(n, kFoldOk);
+  for (std::size_t k = 0; k < judged.size(); ++k) global[judged[k]] = state[k];
+  const std::vector<char> suspect = suspect_points(CloudIndex(points, judged), points, judged, global, far, threads);
+  std::vector<std::int8_t> flags(judged.size());
+  bool any = false;
+  for (std::size_t k = 0; k < judged.size(); ++k) {
+    flags[k] = suspect[judged[k]];
+    any = any || flags[k] != 0;
+  }
+  if (!any) return none;
+  const std::vector<std::int8_t> spread = spread_verdicts(points, judged, flags, threads, meter);
+  std::vector<char> out(n, 0);
+  for (std::size_t i = 0; i < n; ++i) out[i] = spread[i] != 0 && !(i < result.outside_body.size() && result.outside_body[i]);
+  return out;
+}
+
+Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::vector<char>& suspect, int threads) {
   const std::size_t n = points.size();
   result.repaired.assign(n, 0);
-  std::vector<char> is_far(n, 0);
-  bool any_far = false;
+  if (!suspect.empty() && suspect.size() != n) fail(ErrorCode::InvalidArgument, "repair_folds: " + std::to_string(suspect.size()) + " suspect flags for " + std::to_string(n) + " points");
   // Points far outside the cloud's body are neither repaired nor fitted (nor data of a fit).
   auto outside = [&](std::size_t i) { return i < result.outside_body.size() && result.outside_body[i]; };
-  for (std::size_t i = 0; i < n; ++i) {
-    is_far[i] = !outside(i) && result.distance[i] > kRepairFactor * result.accuracy && result.distance[i] > kRepairSpacings * result.length_scale;
-    any_far = any_far || is_far[i];
-  }
-  bool any_doubt = false;
-  for (std::int8_t state : fold_state) any_doubt = any_doubt || state != kFoldOk;
-  if (!any_far && !any_doubt) return {};
+  const std::vector<char> is_far = far_from_surface(result);
+  auto taken = [&](std::size_t i) { return is_far[i] || (!suspect.empty() && suspect[i]); };
+  bool any = false;
+  for (std::size_t i = 0; i < n && !any; ++i) any = taken(i) && !outside(i);
+  if (!any) return {};
   const CloudIndex index(points);
-  const std::vector<char> suspect = suspect_points(index, points, fold_state, is_far, threads);
   std::vector<std::size_t> far;
   for (std::size_t i = 0; i < n; ++i)
-    if ((is_far[i] || suspect[i]) && !outside(i)) far.push_back(i);
+    if (taken(i) && !outside(i)) far.push_back(i);
   if (far.empty() || far.size() == n) return {};  // nothing to repair, or nothing to repair from
 
   // Gross outliers are left where they are and out of the refit: a harmonic fill would give

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "result.hpp"
+#include "work_meter.hpp"
 
 namespace dbs {
 
@@ -44,22 +45,27 @@ constexpr int kMaxRefitNodes = 441;             ///< leaves with more interior g
 constexpr double kSuspectClusterShare = 0.75;    ///< an undecided point is repaired when at least this share of its neighbours are doubtful too
 constexpr double kBorderOffset = 0.4;           ///< ... and it is inside the cloud: its neighbours' centroid within this x their mean distance
 
-/// What repair_far_points did.
+/// What repair_folds did.
 struct Repair {
   std::size_t repaired = 0;        ///< points given a new (u,v)
   std::vector<int> refitted;       ///< leaves refitted, in increasing id order
 };
 
-/// Whether repair_folds would take any point of `points` for the fold measure's verdicts
-/// `fold_state` on them (one per point), far points aside: a cheap test on a sample of a large
-/// cloud before its verdicts are spread over every point.
-bool has_suspect_points(const std::vector<Vec3>& points, const std::vector<std::int8_t>& fold_state, int threads);
+/// The points the repair should take besides the far ones, from the fold measure's verdicts
+/// `state` on the points `judged` (indices into `points`; empty: `state` is of every point):
+/// the folded, collapsed and scrambled points, undecided points amid doubtful ones (never at
+/// the cloud's border), and the ring of their kRepairNeighbours nearest points. On a sampled
+/// cloud they are found among the judged points and every point takes the flag of its
+/// nearest judged point (a query per point only when there is a suspect). Points far outside
+/// the body are never taken. Deterministic for any thread count.
+std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter = nullptr);
 
 /// Repairs the far points of `result` (parameters of `points`, which it was made from) and
-/// the suspect ones of `fold_state` (the fold measure's verdict on each point of that
-/// result, or empty: far points only) in place, setting result.repaired, and refits the
-/// leaves they land on (their grids, surfaces and the distances of their points change;
-/// their mean/max figures are left to the caller). Deterministic for any thread count.
-Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::vector<std::int8_t>& fold_state, int threads);
+/// those flagged in `suspect` (doubtful_points; empty: far points only) in place, setting
+/// result.repaired, and refits the leaves they land on (their grids, surfaces and the
+/// distances of their points change; their mean/max figures are left to the caller). Points
+/// far outside the body (result.outside_body) are neither repaired nor data of a refit.
+/// Deterministic for any thread count.
+Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::vector<char>& suspect, int threads);
 
 }  // namespace dbs

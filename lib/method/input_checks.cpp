@@ -39,6 +39,7 @@ void check_parameters(const Result& result, InputChecks& checks) {
   std::vector<char> occupied(g * g, 0);
   checks.clamped = 0;
   for (std::size_t i = 0; i < n; ++i) {
+    if (i < result.outside_body.size() && result.outside_body[i]) continue;  // not placed yet, and not the body
     const double u = result.u[i], v = result.v[i];
     const std::size_t cu = std::min(g - 1, static_cast<std::size_t>(u * static_cast<double>(g)));
     const std::size_t cv = std::min(g - 1, static_cast<std::size_t>(v * static_cast<double>(g)));

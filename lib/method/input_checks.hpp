@@ -38,8 +38,8 @@ struct InputChecks {
 /// The boundary against the cloud, before the run: gap (h > 0 the cloud's spacing) and scale ratio.
 void check_boundary_against_cloud(const CloudIndex& index, const Boundary& boundary, double h, InputChecks& checks);
 
-/// The parameters, after A2 gave every point its foot (before the repair moves any):
-/// coverage and clamped points.
+/// The parameters, after A2 gave every point of the body its foot (before the repair moves
+/// any): coverage and clamped points, over the body (result.outside_body left out).
 void check_parameters(const Result& result, InputChecks& checks);
 
 /// One message per figure beyond its threshold, with the numbers and the likely mistake.

@@ -48,8 +48,9 @@ constexpr double kMinLossScale = 1e-6, kMaxLossScale = 1e6;
 /// The sizes of clouds and boundaries supported (bounding-box diagonals, in any unit).
 constexpr double kMinSize = 1e-100, kMaxSize = 1e75;
 
-/// Most points the fold measure judges (about 0.1 s: the measure takes about 1.2 s per 100k points).
-constexpr std::size_t kFoldJudgedPoints = 10000;
+/// Most points the fold measure judges (about 0.25 s: the measure takes about 1.2 s per 100k
+/// points); a scan of up to this many is judged, and repaired, point by point.
+constexpr std::size_t kFoldJudgedPoints = 20000;
 
 // A patch with fewer points than this is not subdivided: its children would have too few
 // points to carry a grid.
@@ -119,10 +120,9 @@ class Driver {
     }
     const auto parameterize_start = Clock::now();
     project_across_borders();
-    place_far_points();
-    // Judged on the feet, before the repair gives far points their neighbours' (u,v).
+    // Judged on the feet, before the repair moves any point.
     check_parameters(result_, checks_);
-    warn(parameter_warnings(checks_, points_.size()));
+    warn(parameter_warnings(checks_, body_.body.size()));
     result_.stage_seconds.parameterize += seconds_since(parameterize_start);
     // The fold measure judges the result; with the repair on it judges it first for the
     // repair, and again only when the repair moved a point.
@@ -143,6 +143,7 @@ class Driver {
         result_.stage_seconds.folds += seconds_since(folds_start);
       }
     }
+    place_far_points();
     summarize();
     result_.boundary_gap = checks_.boundary_gap;
     result_.scale_ratio = checks_.scale_ratio;
@@ -368,14 +369,7 @@ class Driver {
   /// judge_folds gives it; every point takes the verdict of the nearest judged point. True
   /// when the repair moved a point.
   bool repair(const std::vector<std::size_t>& judged, const FoldMeasure& folds) {
-    std::vector<std::int8_t> state = folds.state;
-    if (!judged.empty()) {
-      // Spread over every point (a query per point) only when some judged point is suspect.
-      std::vector<Vec3> sample;
-      for (std::size_t i : judged) sample.push_back(points_[i]);
-      state = has_suspect_points(sample, folds.state, threads_) ? spread_verdicts(points_, judged, folds.state, threads_, &meter_) : std::vector<std::int8_t>{};
-    }
-    const Repair repair = repair_folds(result_, points_, state, threads_);
+    const Repair repair = repair_folds(result_, points_, doubtful_points(result_, points_, judged, folds.state, threads_, &meter_), threads_);
     result_.repaired_points = repair.repaired;
     if (repair.refitted.empty()) return repair.repaired > 0;
     std::vector<std::vector<double>> distances(result_.patches.size());

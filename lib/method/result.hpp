@@ -26,7 +26,7 @@ struct Result {
   bool requested_accuracy_met = false;  // every leaf met the requested target
   double noise = 0.0;                   // estimated noise deviation sigma along the normal, cloud units
   // The fold measure of the (u,v) (fold_measure.hpp): no connectivity, no trust in the surface.
-  // It judges at most 10,000 points, evenly spread over the input order; counts are of those.
+  // It judges at most 20,000 points of the body, evenly spread over the input order; counts are of those.
   std::size_t judged_points = 0, folded_points = 0, undecided_points = 0, coincident_points = 0;
   std::size_t collapsed_points = 0;  // of the undecided: neighbourhood squeezed in (u,v)
   double folded_share = 0.0;  // folded / decided points

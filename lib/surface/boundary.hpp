@@ -21,7 +21,7 @@ class Boundary {
   /// The largest relative corner tolerance accepted (CornerTolerance): a tenth of the size.
   static constexpr double kMaxCornerTolerance = 0.1;
 
-  /// How far corners may miss each other: `value` in cloud units, or times the boundary's
+  /// How far corners may miss each other: `value` in the boundary's units, or times its
   /// bounding-box diagonal when `relative`.
   struct CornerTolerance {
     double value;

@@ -63,7 +63,8 @@ double weighted_median(std::vector<std::pair<double, double>> value_weight) {
 }
 
 // u' = scale_u u, v' = scale_v v with total (u',v') area = total 3D area (see the header).
-void fit_domain_scale(const std::vector<Edges>& edges, DomainScaling scaling, double& scale_u, double& scale_v) {
+/// False (scales 1) when no triangle has area to fit them to.
+bool fit_domain_scale(const std::vector<Edges>& edges, DomainScaling scaling, double& scale_u, double& scale_v) {
   double area3 = 0.0, area2 = 0.0;
   std::vector<std::pair<double, double>> speed_u, speed_v;  // (|dP/du|, 3D area) per triangle
   for (const Edges& ed : edges) {
@@ -82,7 +83,7 @@ void fit_domain_scale(const std::vector<Edges>& edges, DomainScaling scaling, do
     }
   }
   scale_u = scale_v = 1.0;
-  if (!(area3 > 0.0) || !(area2 > 0.0)) return;
+  if (!(area3 > 0.0) || !(area2 > 0.0)) return false;
   if (scaling == DomainScaling::PerAxis) {
     // Medians, not means: a few triangles bridging across the surface have huge speeds.
     scale_u = weighted_median(std::move(speed_u));
@@ -91,6 +92,7 @@ void fit_domain_scale(const std::vector<Edges>& edges, DomainScaling scaling, do
   double common = std::sqrt(area3 / (area2 * scale_u * scale_v));
   scale_u *= common;
   scale_v *= common;
+  return true;
 }
 
 TriangleDistortion measure(const Edges& ed, double scale_u, double scale_v) {
@@ -149,7 +151,7 @@ Distortion measure_distortion(const std::vector<Vec3>& points, const std::vector
   Distortion result;
   DistortionSummary& s = result.summary;
   s.triangles = triangles.size();
-  fit_domain_scale(edges, scaling, s.scale_u, s.scale_v);
+  const bool fitted = fit_domain_scale(edges, scaling, s.scale_u, s.scale_v);
 
   std::size_t negative = 0, positive = 0;
   for (const Edges& ed : edges) {
@@ -191,8 +193,10 @@ Distortion measure_distortion(const std::vector<Vec3>& points, const std::vector
   s.sigma1 = summarize(std::move(sigma1));
   s.sigma2 = summarize(std::move(sigma2));
   s.mesh_stretch_l2 = area3_sum > 0.0 ? std::sqrt(stretch_sum / area3_sum) : 0.0;
-  s.scale_u *= unit;
-  s.scale_v *= unit;
+  if (fitted) {  // in cloud units; unfitted scales stay 1
+    s.scale_u *= unit;
+    s.scale_v *= unit;
+  }
   return result;
 }
 
