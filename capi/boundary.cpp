@@ -15,36 +15,41 @@ const dbs::Polyline& side_of(const dbs::Boundary& boundary, int32_t side) {
 
 }  // namespace
 
-int dbs_boundary_create(const double* bottom, size_t n_bottom, const double* right, size_t n_right, const double* top, size_t n_top, const double* left, size_t n_left, dbs_boundary** out) {
-  return guarded(__func__, [&] {
-    require_non_null(bottom, "bottom");
-    require_non_null(right, "right");
-    require_non_null(top, "top");
-    require_non_null(left, "left");
-    require_non_null(out, "out");
-    dbs::Boundary boundary(points_from(bottom, n_bottom), points_from(right, n_right), points_from(top, n_top), points_from(left, n_left));
-    *out = new dbs_boundary{std::move(boundary)};
-  });
-}
-
 namespace {
 
 dbs::Boundary::CornerTolerance corner_tolerance(double tolerance, int32_t relative) { return {tolerance, relative != 0}; }
 
+/// dbs_boundary_create(_tolerant): the arguments checked, then the sides made a boundary.
+dbs::Boundary boundary_of_sides(const double* bottom, size_t n_bottom, const double* right, size_t n_right, const double* top, size_t n_top, const double* left, size_t n_left,
+                                dbs_boundary** out, dbs::Boundary::CornerTolerance tolerance) {
+  require_non_null(bottom, "bottom");
+  require_non_null(right, "right");
+  require_non_null(top, "top");
+  require_non_null(left, "left");
+  require_non_null(out, "out");
+  return dbs::Boundary(points_from(bottom, n_bottom), points_from(right, n_right), points_from(top, n_top), points_from(left, n_left), tolerance);
+}
+
+/// Hands `boundary` to the caller: *out, then *out_max_snap (may be null) once nothing can
+/// fail any more, so that both stay untouched on failure.
+void hand_out(dbs::Boundary boundary, double* out_max_snap, dbs_boundary** out) {
+  const double snap = boundary.max_snap();
+  *out = new dbs_boundary{std::move(boundary)};
+  if (out_max_snap) *out_max_snap = snap;
+}
+
 }  // namespace
+
+int dbs_boundary_create(const double* bottom, size_t n_bottom, const double* right, size_t n_right, const double* top, size_t n_top, const double* left, size_t n_left, dbs_boundary** out) {
+  return guarded(__func__, [&] {
+    hand_out(boundary_of_sides(bottom, n_bottom, right, n_right, top, n_top, left, n_left, out, {dbs::Boundary::kCornerTolerance, true}), nullptr, out);
+  });
+}
 
 int dbs_boundary_create_tolerant(const double* bottom, size_t n_bottom, const double* right, size_t n_right, const double* top, size_t n_top, const double* left, size_t n_left, double tolerance, int32_t relative,
                                  double* out_max_snap, dbs_boundary** out) {
   return guarded(__func__, [&] {
-    require_non_null(bottom, "bottom");
-    require_non_null(right, "right");
-    require_non_null(top, "top");
-    require_non_null(left, "left");
-    require_non_null(out, "out");
-    dbs::Boundary boundary(points_from(bottom, n_bottom), points_from(right, n_right), points_from(top, n_top), points_from(left, n_left), corner_tolerance(tolerance, relative));
-    const double snap = boundary.max_snap();
-    *out = new dbs_boundary{std::move(boundary)};
-    if (out_max_snap) *out_max_snap = snap;  // after the allocation: untouched on failure
+    hand_out(boundary_of_sides(bottom, n_bottom, right, n_right, top, n_top, left, n_left, out, corner_tolerance(tolerance, relative)), out_max_snap, out);
   });
 }
 
@@ -52,10 +57,7 @@ int dbs_boundary_load_tolerant(const char* path, double tolerance, int32_t relat
   return guarded(__func__, [&] {
     require_non_null(path, "path");
     require_non_null(out, "out");
-    dbs::Boundary boundary = dbs::load_boundary(path, corner_tolerance(tolerance, relative));
-    const double snap = boundary.max_snap();
-    *out = new dbs_boundary{std::move(boundary)};
-    if (out_max_snap) *out_max_snap = snap;
+    hand_out(dbs::load_boundary(path, corner_tolerance(tolerance, relative)), out_max_snap, out);
   });
 }
 
