@@ -15,7 +15,7 @@ int dbs_distances_create(const dbs_result* result, double tolerance, dbs_distanc
     if (tolerance < 0.0) fail_status(DBS_ERR_OUT_OF_RANGE, "tolerance " + dbs::significant_text(tolerance, 6) + " is negative (0 = the result's accuracy target)");
     const dbs::Result& r = result->result;
     const double used = tolerance > 0.0 ? tolerance : r.accuracy;
-    *out = new dbs_distances{dbs::distance_statistics(r.distance, r.patch, r.patches.size(), used)};
+    *out = new dbs_distances{dbs::distance_statistics(r, used)};
   });
 }
 

@@ -699,7 +699,9 @@ typedef struct dbs_distances dbs_distances;
 #define DBS_DISTANCES_WITHIN 8    /* share of the points with distance <= tolerance, in [0,1] */
 #define DBS_DISTANCES_TOLERANCE 9 /* the tolerance used, cloud units */
 
-/** Statistics of the point-to-surface distances of a result, overall and per patch.
+/** Statistics of the point-to-surface distances of a result, overall and per patch; since
+ *  0.4 without the points far outside the cloud's body (DBS_STAT_FAR_POINTS), as the
+ *  result's own mean and max distance.
  *  `tolerance` >= 0 in cloud units; 0 = the result's accuracy target (DBS_STAT_ACCURACY).
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_NON_FINITE (tolerance), DBS_ERR_OUT_OF_RANGE
  *  (a negative tolerance), DBS_ERR_NO_MEMORY. \since 0.1 */

@@ -98,7 +98,7 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   const Distortion per_axis = measure_distortion(cloud.points(), result.u, result.v, mesh.triangles, DomainScaling::PerAxis, mesh.surface_normals);
   const Distortion uniform = measure_distortion(cloud.points(), result.u, result.v, mesh.triangles, DomainScaling::Uniform, mesh.surface_normals);
   const double distortion_seconds = clock.lap();
-  const DistanceReport distances = distance_statistics(result.distance, result.patch, result.patches.size(), result.accuracy);
+  const DistanceReport distances = distance_statistics(result, result.accuracy);
   const double distance_seconds = clock.lap();
 
   const CirclePattern pattern(per_axis.summary.scale_u, per_axis.summary.scale_v);

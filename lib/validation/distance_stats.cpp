@@ -54,4 +54,16 @@ DistanceReport distance_statistics(const std::vector<double>& distances, const s
   return report;
 }
 
+DistanceReport distance_statistics(const Result& result, double tolerance) {
+  if (result.far_points == 0) return distance_statistics(result.distance, result.patch, result.patches.size(), tolerance);
+  std::vector<double> distances;
+  std::vector<std::int32_t> patch;
+  for (std::size_t i = 0; i < result.distance.size(); ++i) {
+    if (i < result.outside_body.size() && result.outside_body[i]) continue;
+    distances.push_back(result.distance[i]);
+    patch.push_back(result.patch[i]);
+  }
+  return distance_statistics(distances, patch, result.patches.size(), tolerance);
+}
+
 }  // namespace dbs

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "result.hpp"
+
 namespace dbs {
 
 struct DistanceStats {
@@ -26,5 +28,9 @@ struct DistanceReport {
 /// naming the first point with a patch id outside [0, patch_count) or a negative tolerance,
 /// Error(NonFinite) naming the first non-finite distance or tolerance.
 DistanceReport distance_statistics(const std::vector<double>& distances, const std::vector<std::int32_t>& patch, std::size_t patch_count, double tolerance);
+
+/// The same of a result's points, those far outside the cloud's body (Result::outside_body)
+/// left out, as in the result's own mean and max distance.
+DistanceReport distance_statistics(const Result& result, double tolerance);
 
 }  // namespace dbs

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "delaunay_mesh.hpp"
+#include "distance_stats.hpp"
 #include "distortion.hpp"
 #include "error.hpp"
 #include "fold_shapes.hpp"
@@ -135,6 +136,10 @@ void points_far_outside_decide_nothing(void**) {
   assert_true(b.result.length_scale == a.result.length_scale);
   assert_true(b.result.mean_distance == a.result.mean_distance && b.result.max_distance == a.result.max_distance);
   assert_int_equal(b.result.clamped_points, a.result.clamped_points);
+  // The validation's distance statistics leave them out too.
+  const dbs::DistanceReport da = dbs::distance_statistics(a.result, 0.0), db = dbs::distance_statistics(b.result, 0.0);
+  assert_int_equal(db.overall.count, da.overall.count);
+  assert_true(db.overall.mean == da.overall.mean && db.overall.max == da.overall.max && db.overall.p99 == da.overall.p99);
   assert_true(b.result.coverage == a.result.coverage);
   assert_true(has(b.warnings, "3 point(s) lie far outside the cloud (beyond 10 times its extent"));
   for (std::size_t i = 0, k = 0; i < glitched.size(); ++i) {
