@@ -8,6 +8,7 @@
 #include "cloud_index.hpp"
 #include "error.hpp"
 #include "fold_measure.hpp"
+#include "harmonic_fill.hpp"
 #include "parallel.hpp"
 #include "spline_displacement.hpp"
 
@@ -337,8 +338,11 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
   for (std::size_t f = 0; f < far.size(); ++f) before[f] = {result.u[far[f]], result.v[far[f]], result.distance[far[f]], result.patch[far[f]], result.level[far[f]]};
 
   // Each far point's neighbours and their normalized inverse-distance weights.
-  std::vector<std::vector<std::size_t>> neighbours(far.size());
-  std::vector<std::vector<double>> weights(far.size());
+  FillRows fill;
+  fill.ids = far;
+  fill.neighbours.resize(far.size());
+  fill.weights.resize(far.size());
+  std::vector<std::vector<std::size_t>>& neighbours = fill.neighbours;
   parallel_for(far.size(), threads, [&](std::size_t f) {
     std::vector<std::size_t> ids;
     std::vector<double> d2;
@@ -347,24 +351,13 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
     for (std::size_t m = 0; m < ids.size(); ++m) {
       if (ids[m] == far[f] || !(d2[m] > 0.0)) continue;
       neighbours[f].push_back(ids[m]);
-      weights[f].push_back(1.0 / std::sqrt(d2[m]));
-      sum += weights[f].back();
+      fill.weights[f].push_back(1.0 / std::sqrt(d2[m]));
+      sum += fill.weights[f].back();
     }
-    for (double& w : weights[f]) w /= sum;
+    for (double& w : fill.weights[f]) w /= sum;
   });
-  // The harmonic fill: Gauss-Seidel in point order, so the result does not depend on threads.
-  for (int sweep = 0; sweep < kRepairSweeps; ++sweep) {
-    for (std::size_t f = 0; f < far.size(); ++f) {
-      if (neighbours[f].empty()) continue;
-      double u = 0.0, v = 0.0;
-      for (std::size_t m = 0; m < neighbours[f].size(); ++m) {
-        u += weights[f][m] * result.u[neighbours[f][m]];
-        v += weights[f][m] * result.v[neighbours[f][m]];
-      }
-      result.u[far[f]] = u;
-      result.v[far[f]] = v;
-    }
-  }
+  fill_sweeps(result, fill, kFillSweeps);
+  balance_stretch(result, points, index, fill, threads);
   // Towards the foot, within a fraction of the spread of the neighbours' (u,v).
   std::vector<Vec2> moved(far.size());
   parallel_for(far.size(), threads, [&](std::size_t f) {

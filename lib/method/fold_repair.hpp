@@ -36,7 +36,6 @@ namespace dbs {
 constexpr double kRepairFactor = 10.0;         ///< far: beyond this x the target ...
 constexpr double kRepairSpacings = 1.0;        ///< ... and beyond this many spacings h
 constexpr std::size_t kRepairNeighbours = 12;  ///< neighbours of the harmonic fill
-constexpr int kRepairSweeps = 200;             ///< Gauss-Seidel sweeps, in point order
 constexpr double kRepairTrust = 0.25;          ///< step towards the foot: at most this x the mean (u,v) distance to the neighbours
 constexpr double kIsolationSpacings = 3.0;      ///< a far point's neighbourhood: at least this many spacings h ...
 constexpr double kIsolationShare = 0.25;        ///< ... isolated when it holds less than this share of a sheet's points
