@@ -14,17 +14,34 @@ namespace {
 /// Grid projections at one grid size while the pleat guard keeps damping some nodes.
 constexpr int kMaxDampedSteps = 4;
 
+/// The pilot measurement of a growing grid: about this many points of the error sample ...
+constexpr std::size_t kPilotPoints = 512;
+/// ... and the grid grows unmeasured when their error is above this x the target. A pilot
+/// that misjudges (its points hold several times their share of far points) costs a grid
+/// one growth more, never a target reported met that is not.
+constexpr double kPilotMargin = 3.0;
+
 }  // namespace
 
 void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean, double& out_max,
                        LossKind loss, double loss_scale, double* out_loss_mean, WorkMeter* meter) {
+  if (indices.empty()) {
+    out_mean = out_max = 0.0;
+    if (out_loss_mean) *out_loss_mean = 0.0;
+    return;
+  }
+  const SurfaceProjector projector(surface, FootPrecision::Distance);
+  measure_distances(projector, points, indices, stride, threads, out_mean, out_max, loss, loss_scale, out_loss_mean, meter);
+}
+
+void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean,
+                       double& out_max, LossKind loss, double loss_scale, double* out_loss_mean, WorkMeter* meter) {
   stride = std::max<std::size_t>(stride, 1);
   const std::size_t count = (indices.size() + stride - 1) / stride;
   out_mean = 0.0;
   out_max = 0.0;
   if (out_loss_mean) *out_loss_mean = 0.0;
   if (count == 0) return;
-  SurfaceProjector projector(surface, FootPrecision::Distance);
   std::vector<double> distance(count);
   metered_for(meter, count, threads, [&](std::size_t k) {
     distance[k] = projector.project(points[indices[k * stride]]).distance;
@@ -72,7 +89,21 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
       patch.damped_nodes += damped;
       if (damped == 0) break;
     }
-    measure_distances(patch.surface, points, patch.subcloud, stride, settings.threads, mean, max, settings.error_loss, settings.error_loss_scale, robust ? &loss_mean : nullptr, settings.meter);
+    const SurfaceProjector surface_projector(patch.surface, FootPrecision::Distance);
+    // A grid that can still grow is first judged on a pilot of about kPilotPoints of the
+    // sample: far above the target, it grows without the whole sample being measured.
+    const std::size_t sampled = (patch.subcloud.size() + stride - 1) / stride;
+    if (grid < settings.max_grid && sampled >= 2 * kPilotPoints) {
+      double pilot_mean = 0.0, pilot_max = 0.0, pilot_loss = 0.0;
+      measure_distances(surface_projector, points, patch.subcloud, stride * (sampled / kPilotPoints), settings.threads, pilot_mean, pilot_max, settings.error_loss,
+                        settings.error_loss_scale, robust ? &pilot_loss : nullptr, settings.meter);
+      if ((robust ? pilot_loss : pilot_mean) > kPilotMargin * settings.accuracy) {
+        if (tick) tick(grid);
+        continue;
+      }
+    }
+    measure_distances(surface_projector, points, patch.subcloud, stride, settings.threads, mean, max, settings.error_loss, settings.error_loss_scale, robust ? &loss_mean : nullptr,
+                      settings.meter);
     error = robust ? loss_mean : mean;
     if (tick) tick(grid);
     if (error <= settings.accuracy || grid >= settings.max_grid) break;

@@ -92,9 +92,9 @@ Vec3 BaseSurface::normal(double u, double v) const {
 Grid BaseSurface::sample(int nu, int nv) const {
   if (nu < 2 || nv < 2)
     fail(ErrorCode::InvalidArgument, "surface sample grid must be at least 2 x 2, got " + std::to_string(nu) + " x " + std::to_string(nv));
-  Grid g(nu, nv);
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) g(i, j) = eval(g.u(i), g.v(j));
+  // eval() at every node, bit for bit: the Coons patch plus the displacement off the border.
+  Grid g = coons_.sample(nu, nv);
+  displacement_.add_to_interior(g);
   return g;
 }
 

@@ -30,6 +30,24 @@ Vec3 CoonsPatch::eval(double u, double v) const {
   return patch_point(u, v, boundary_.bottom().at(u), boundary_.top().at(u), boundary_.left().at(v), boundary_.right().at(v), c);
 }
 
+Grid CoonsPatch::sample(int nu, int nv) const {
+  Grid g(nu, nv);
+  std::vector<Vec3> bottom(static_cast<std::size_t>(nu)), top(static_cast<std::size_t>(nu)), left(static_cast<std::size_t>(nv)), right(static_cast<std::size_t>(nv));
+  for (int i = 0; i < nu; ++i) {
+    bottom[static_cast<std::size_t>(i)] = boundary_.bottom().at(g.u(i));
+    top[static_cast<std::size_t>(i)] = boundary_.top().at(g.u(i));
+  }
+  for (int j = 0; j < nv; ++j) {
+    left[static_cast<std::size_t>(j)] = boundary_.left().at(g.v(j));
+    right[static_cast<std::size_t>(j)] = boundary_.right().at(g.v(j));
+  }
+  const Vec3 c[2][2] = {{c00_, c10_}, {c01_, c11_}};
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i)
+      g(i, j) = patch_point(g.u(i), g.v(j), bottom[static_cast<std::size_t>(i)], top[static_cast<std::size_t>(i)], left[static_cast<std::size_t>(j)], right[static_cast<std::size_t>(j)], c);
+  return g;
+}
+
 SurfacePoint CoonsPatch::eval_derivs(double u, double v) const {
   Vec3 d_bottom, d_top, d_left, d_right;
   const Vec3 bottom = boundary_.bottom().at(u, d_bottom), top = boundary_.top().at(u, d_top);

@@ -1,6 +1,7 @@
 // Bilinearly blended Coons patch of a four-sided boundary, sides by arc length.
 #pragma once
 #include "boundary.hpp"
+#include "grid.hpp"
 
 namespace dbs {
 
@@ -19,6 +20,9 @@ class CoonsPatch {
   Vec3 eval(double u, double v) const;
   /// C and its partial derivatives (one-sided at polyline vertices).
   SurfacePoint eval_derivs(double u, double v) const;
+  /// eval() on a uniform nu x nv grid (the Grid's parameters), bit for bit, each side
+  /// evaluated once per row or column instead of once per point.
+  Grid sample(int nu, int nv) const;
 
  private:
   Boundary boundary_;

@@ -4,6 +4,7 @@
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "error.hpp"
 
@@ -143,6 +144,25 @@ Vec3 SplineDisplacement::eval(double u, double v) const {
     along_u[b] = blend(bu, row[0], row[1], row[2], row[3]);
   }
   return blend(bv, along_u[0], along_u[1], along_u[2], along_u[3]);
+}
+
+void SplineDisplacement::add_to_interior(Grid& grid) const {
+  if (is_zero()) return;
+  std::vector<SpanBasis> bu(static_cast<std::size_t>(grid.nu)), bv(static_cast<std::size_t>(grid.nv));
+  for (int i = 0; i < grid.nu; ++i) bu[static_cast<std::size_t>(i)] = span_basis(grid.u(i), nu_, false);
+  for (int j = 0; j < grid.nv; ++j) bv[static_cast<std::size_t>(j)] = span_basis(grid.v(j), nv_, false);
+  for (int j = 1; j + 1 < grid.nv; ++j) {
+    const SpanBasis& b_v = bv[static_cast<std::size_t>(j)];
+    for (int i = 1; i + 1 < grid.nu; ++i) {
+      const SpanBasis& b_u = bu[static_cast<std::size_t>(i)];
+      Vec3 along_u[4];
+      for (int b = 0; b < 4; ++b) {
+        const Vec3* row = &coeffs_[static_cast<std::size_t>(b_v.first + b) * (nu_ + 2) + b_u.first];
+        along_u[b] = blend(b_u, row[0], row[1], row[2], row[3]);
+      }
+      grid(i, j) += blend(b_v, along_u[0], along_u[1], along_u[2], along_u[3]);
+    }
+  }
 }
 
 void SplineDisplacement::eval_derivs(double u, double v, Vec3& d, Vec3& du, Vec3& dv) const {

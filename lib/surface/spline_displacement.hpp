@@ -14,6 +14,10 @@ class SplineDisplacement {
 
   bool is_zero() const { return nu_ == 0; }
   Vec3 eval(double u, double v) const;
+  /// Adds eval() at the parameters of `grid` (a uniform grid) to its points, except on its
+  /// border (where d vanishes), bit for bit as eval(); the basis of each row and column is
+  /// computed once.
+  void add_to_interior(Grid& grid) const;
   /// Value and first partial derivatives.
   void eval_derivs(double u, double v, Vec3& d, Vec3& du, Vec3& dv) const;
 

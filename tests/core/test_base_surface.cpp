@@ -297,6 +297,15 @@ void test_sample(void**) {
   assert_int_equal(s.nv, 4);
   for (int j = 0; j < 4; ++j)
     for (int i = 0; i < 5; ++i) assert_true(bitwise_equal(s(i, j), surface.eval(i / 4.0, j / 3.0)));
+  // sample() evaluates each side once per row or column and the spline's basis once per row
+  // and column: still eval() bit for bit, at sizes off the spline's sites and without a grid.
+  const BaseSurface coons_only(wavy_boundary(1));
+  for (const BaseSurface* f : {&surface, &coons_only})
+    for (const auto& size : {std::pair<int, int>{64, 64}, {17, 33}, {2, 2}}) {
+      const Grid g = f->sample(size.first, size.second);
+      for (int j = 0; j < g.nv; ++j)
+        for (int i = 0; i < g.nu; ++i) assert_true(bitwise_equal(g(i, j), f->eval(g.u(i), g.v(j))));
+    }
   try {
     surface.sample(1, 4);
     fail();
