@@ -34,7 +34,7 @@ dbs::Boundary boundary_of_sides(const double* bottom, size_t n_bottom, const dou
 /// fail any more, so that both stay untouched on failure.
 void hand_out(dbs::Boundary boundary, double* out_max_snap, dbs_boundary** out) {
   const double snap = boundary.max_snap();
-  *out = new dbs_boundary{std::move(boundary)};
+  *out = new dbs_boundary{std::move(boundary), {}};
   if (out_max_snap) *out_max_snap = snap;
 }
 
@@ -66,7 +66,7 @@ int dbs_boundary_from_loop(const double* xyz, size_t n, const size_t* corners, d
     require_non_null(xyz, "xyz");
     require_non_null(corners, "corners");
     require_non_null(out, "out");
-    *out = new dbs_boundary{dbs::boundary_from_loop(points_from(xyz, n), {corners[0], corners[1], corners[2], corners[3]})};
+    *out = new dbs_boundary{dbs::boundary_from_loop(points_from(xyz, n), {corners[0], corners[1], corners[2], corners[3]}), {}};
   });
 }
 
@@ -74,7 +74,7 @@ int dbs_boundary_load(const char* path, dbs_boundary** out) {
   return guarded(__func__, [&] {
     require_non_null(path, "path");
     require_non_null(out, "out");
-    *out = new dbs_boundary{dbs::load_boundary(path)};
+    *out = new dbs_boundary{dbs::load_boundary(path), {}};
   });
 }
 

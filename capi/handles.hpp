@@ -16,6 +16,7 @@ struct dbs_cloud {
 
 struct dbs_boundary {
   dbs::Boundary boundary;
+  std::vector<std::vector<dbs::Vec3>> holes;  // of a boundary found from a cloud
 };
 
 /// A read-only view of patches owned elsewhere (a result, or the run in a level callback).

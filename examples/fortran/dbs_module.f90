@@ -37,6 +37,7 @@ module dbs
   integer(c_int32_t), parameter :: DBS_OPT_REPAIR = 11
   integer(c_int32_t), parameter :: DBS_OPT_LOSS = 12, DBS_OPT_LOSS_SCALE = 13
   integer(c_int32_t), parameter :: DBS_OPT_CERES_MAX_ITERATIONS = 14, DBS_OPT_CERES_FUNCTION_TOLERANCE = 15
+  integer(c_int32_t), parameter :: DBS_OPT_OUTLINE_NEIGHBOURS = 16
   integer(c_int32_t), parameter :: DBS_SOLVER_LINEAR = 0, DBS_SOLVER_CERES = 1
   integer(c_int32_t), parameter :: DBS_LOSS_NONE = 0, DBS_LOSS_HUBER = 1, DBS_LOSS_CAUCHY = 2, DBS_LOSS_SOFT_L1 = 3
 
@@ -283,6 +284,43 @@ module dbs
       type(c_funptr), value :: fn
       type(c_ptr), value :: payload
       integer(c_int) :: dbs_options_set_warning
+    end function
+
+    ! ---- boundaries from the cloud itself ------------------------------------------------
+    ! options may be c_null_ptr for the defaults.
+    function dbs_boundary_detect(cloud, options, out) bind(C, name="dbs_boundary_detect")
+      import :: c_int, c_ptr
+      type(c_ptr), value :: cloud, options
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: dbs_boundary_detect
+    end function
+    function dbs_boundary_from_corners(cloud, corners_xyz, out) bind(C, name="dbs_boundary_from_corners")
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: cloud
+      real(c_double), intent(in) :: corners_xyz(12)
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: dbs_boundary_from_corners
+    end function
+    function dbs_boundary_hole_count(boundary, out) bind(C, name="dbs_boundary_hole_count")
+      import :: c_int, c_size_t, c_ptr
+      type(c_ptr), value :: boundary
+      integer(c_size_t), intent(out) :: out
+      integer(c_int) :: dbs_boundary_hole_count
+    end function
+    function dbs_boundary_hole_size(boundary, hole, out) bind(C, name="dbs_boundary_hole_size")
+      import :: c_int, c_size_t, c_ptr
+      type(c_ptr), value :: boundary
+      integer(c_size_t), value :: hole
+      integer(c_size_t), intent(out) :: out
+      integer(c_int) :: dbs_boundary_hole_size
+    end function
+    function dbs_boundary_hole_points(boundary, hole, out_xyz, capacity) bind(C, name="dbs_boundary_hole_points")
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: boundary
+      integer(c_size_t), value :: hole
+      real(c_double), intent(out) :: out_xyz(*)
+      integer(c_size_t), value :: capacity
+      integer(c_int) :: dbs_boundary_hole_points
     end function
 
     ! ---- parameterization ----------------------------------------------------------------

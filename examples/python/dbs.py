@@ -65,8 +65,9 @@ OPT_LOSS = 12
 OPT_LOSS_SCALE = 13
 OPT_CERES_MAX_ITERATIONS = 14
 OPT_CERES_FUNCTION_TOLERANCE = 15
+OPT_OUTLINE_NEIGHBOURS = 16
 INT_OPTIONS = (OPT_MAX_LEVEL, OPT_INITIAL_GRID, OPT_MAX_GRID, OPT_SOLVER, OPT_THREADS, OPT_NOISE_FLOOR, OPT_REPAIR,
-               OPT_LOSS, OPT_CERES_MAX_ITERATIONS)
+               OPT_LOSS, OPT_CERES_MAX_ITERATIONS, OPT_OUTLINE_NEIGHBOURS)
 
 FEATURE_DRACO = 0
 FEATURE_VALIDATION = 1
@@ -201,6 +202,11 @@ PROTOTYPES = {
     "dbs_options_set_progress": (_int, [_ptr, PROGRESS_FN, _ptr]),
     "dbs_options_set_level_callback": (_int, [_ptr, LEVEL_FN, _ptr]),
     "dbs_options_set_warning": (_int, [_ptr, WARNING_FN, _ptr]),
+    "dbs_boundary_detect": (_int, [_ptr, _ptr, _P(_ptr)]),
+    "dbs_boundary_from_corners": (_int, [_ptr, _P(_dbl), _P(_ptr)]),
+    "dbs_boundary_hole_count": (_int, [_ptr, _P(_size)]),
+    "dbs_boundary_hole_size": (_int, [_ptr, _size, _P(_size)]),
+    "dbs_boundary_hole_points": (_int, [_ptr, _size, _P(_dbl), _size]),
     "dbs_parameterize": (_int, [_ptr, _ptr, _ptr, _P(_ptr)]),
     "dbs_result_destroy": (None, [_ptr]),
     "dbs_result_point_count": (_int, [_ptr, _P(_size)]),
@@ -389,6 +395,38 @@ class Boundary(_Handle):
         handle = _ptr()
         _check(lib.dbs_boundary_from_loop(array, count, indices, ctypes.byref(handle)))
         return cls(handle)
+
+    @classmethod
+    def detect(cls, cloud, options=None):
+        """The boundary found from the cloud itself: its outline cut at the four corners where
+        it turns most (dbs_boundary_detect); holes() gives its inner loops."""
+        handle = _ptr()
+        _check(lib.dbs_boundary_detect(cloud.handle, options.handle if options is not None else None, ctypes.byref(handle)))
+        return cls(handle)
+
+    @classmethod
+    def from_corners(cls, cloud, corners):
+        """The cloud's outline cut at the points nearest to four corner points (x, y, z), which
+        become (0,0), (1,0), (1,1), (0,1) (dbs_boundary_from_corners)."""
+        array, count = _points_array(corners)
+        if count != 4:
+            raise ValueError("corners needs 4 points, got %d" % count)
+        handle = _ptr()
+        _check(lib.dbs_boundary_from_corners(cloud.handle, array, ctypes.byref(handle)))
+        return cls(handle)
+
+    def holes(self):
+        """The inner loops of a detected boundary, each a list of (x, y, z)."""
+        count = _size()
+        _check(lib.dbs_boundary_hole_count(self._handle, ctypes.byref(count)))
+        loops = []
+        for hole in range(count.value):
+            size = _size()
+            _check(lib.dbs_boundary_hole_size(self._handle, hole, ctypes.byref(size)))
+            array = (_dbl * (3 * size.value))()
+            _check(lib.dbs_boundary_hole_points(self._handle, hole, array, size.value))
+            loops.append(_triples(array))
+        return loops
 
     @classmethod
     def load(cls, path, tolerance=None, relative=True):

@@ -39,6 +39,7 @@ const OptionSpec kSpecs[] = {
     {{"loss_scale", false, 0.0, kUnbounded}, false},
     {{"ceres_max_iterations", true, 1.0, 1000.0}, false},
     {{"ceres_function_tolerance", false, 1e-16, 1.0}, false},
+    {{"outline_neighbours", true, 6.0, 256.0}, false},
 };
 constexpr int kOptionCount = static_cast<int>(sizeof(kSpecs) / sizeof(kSpecs[0]));
 
@@ -92,6 +93,7 @@ int Options::*integer_member(OptionId id) {
     case OptionId::NoiseFloor: return &Options::noise_floor;
     case OptionId::Repair: return &Options::repair;
     case OptionId::CeresMaxIterations: return &Options::ceres_max_iterations;
+    case OptionId::OutlineNeighbours: return &Options::outline_neighbours;
     default: return nullptr;
   }
 }

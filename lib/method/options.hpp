@@ -44,6 +44,9 @@ struct Options {
   double loss_scale = 0.0;
   int ceres_max_iterations = 25;
   double ceres_function_tolerance = 1e-6;
+  /// Neighbourhood of the outline of dbs_boundary_detect and dbs_boundary_from_corners
+  /// (outline.hpp): the nearest points a point's angular gap is judged on.
+  int outline_neighbours = 24;
   ProgressFn progress;
   LevelFn on_level;
   WarningFn warning;
@@ -70,6 +73,7 @@ enum class OptionId {
   LossScale = 13,
   CeresMaxIterations = 14,
   CeresFunctionTolerance = 15,
+  OutlineNeighbours = 16,
 };
 
 struct OptionInfo {

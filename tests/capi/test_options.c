@@ -34,6 +34,7 @@ static const struct option_row kOptions[] = {
     {DBS_OPT_LOSS_SCALE, "loss_scale", 0, 0.0, 0.0, DBL_MAX, 1, -1e-12, NAN},
     {DBS_OPT_CERES_MAX_ITERATIONS, "ceres_max_iterations", 1, 25, 1, 1000, 1, 0, 1001},
     {DBS_OPT_CERES_FUNCTION_TOLERANCE, "ceres_function_tolerance", 0, 1e-6, 1e-16, 1.0, 1, 0.5e-16, 1.5},
+    {DBS_OPT_OUTLINE_NEIGHBOURS, "outline_neighbours", 1, 24, 6, 256, 1, 5, 257},
 };
 #define OPTION_COUNT (sizeof kOptions / sizeof kOptions[0])
 
@@ -182,7 +183,7 @@ static void the_wrong_type_is_rejected(void **state) {
 static void unknown_ids_are_rejected(void **state) {
   (void)state;
   dbs_options *options = new_options();
-  const int32_t unknown[] = {-1, 16, 1000};
+  const int32_t unknown[] = {-1, 17, 1000};
   for (int k = 0; k < 3; ++k) {
     char needle[48];
     snprintf(needle, sizeof needle, "option id %d", (int)unknown[k]);

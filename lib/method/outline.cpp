@@ -1,0 +1,370 @@
+#include "outline.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <queue>
+#include <string>
+#include <tuple>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include "cloud_index.hpp"
+#include "error.hpp"
+#include "parallel.hpp"
+
+namespace dbs {
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
+/// A path's ends closer than this x the loop's median spacing close it into a loop.
+constexpr double kClosingSpacings = 5.0;
+/// The smoothing sums over this many sigmas of arc length on either side.
+constexpr double kWindowSigmas = 3.0;
+/// The pushed loop is smoothed again over this many local spacings (sigma).
+constexpr double kFinalSmoothing = 1.0;
+/// The outermost points a loop point is pushed to lie within this many local spacings of it
+/// (less than a hole's radius, or the push would reach across it).
+constexpr double kPushSpacings = 2.5;
+/// ... and within this many local spacings of the line it is pushed along.
+constexpr double kPushWidth = 1.0;
+/// The outline runs this many local spacings outside the outermost points: about the gap a
+/// sampling leaves between them and the true edge.
+constexpr double kOutwardMargin = 0.25;
+/// Excursions of a path (without_excursions): ends within this many local spacings ...
+constexpr double kShortcutSpacings = 3.0;
+/// ... and more than this x that apart along the path.
+constexpr double kExcursionRatio = 3.0;
+
+/// Each point's nearest points (itself left out) and its local spacing.
+struct Neighbourhoods {
+  std::vector<std::vector<std::size_t>> nearest;  ///< the k nearest, nearest first
+  std::vector<std::vector<std::size_t>> around;   ///< nearest and reverse nearest, sorted
+  std::vector<double> spacing;
+};
+
+Neighbourhoods neighbourhoods(const CloudIndex& index, const std::vector<Vec3>& points, std::size_t k, int threads) {
+  const std::size_t n = points.size();
+  Neighbourhoods nb;
+  nb.nearest.resize(n);
+  nb.around.resize(n);
+  nb.spacing.resize(n);
+  parallel_for(n, threads, [&](std::size_t i) {
+    std::vector<std::size_t> ids;
+    std::vector<double> d2;
+    index.knn(points[i], k + 1, ids, d2);
+    std::vector<std::size_t>& own = nb.nearest[i];
+    for (std::size_t m = 0; m < ids.size() && own.size() < k; ++m)
+      if (ids[m] != i) own.push_back(ids[m]);
+    nb.spacing[i] = std::sqrt(d2[std::min(kSpacingNeighbour, d2.size() - 1)]);
+  });
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j : nb.nearest[i]) {
+      nb.around[i].push_back(j);
+      nb.around[j].push_back(i);
+    }
+  }
+  parallel_for(n, threads, [&](std::size_t i) {
+    std::vector<std::size_t>& a = nb.around[i];
+    std::sort(a.begin(), a.end());
+    a.erase(std::unique(a.begin(), a.end()), a.end());
+  });
+  return nb;
+}
+
+/// Unit normal of the plane fitted (PCA) to point i and its nearest points; sign arbitrary.
+Vec3 fitted_normal(const std::vector<Vec3>& points, std::size_t i, const std::vector<std::size_t>& nearest) {
+  Vec3 mean = points[i];
+  for (std::size_t j : nearest) mean += points[j];
+  mean /= static_cast<double>(nearest.size() + 1);
+  Eigen::Matrix3d cov = (points[i] - mean) * (points[i] - mean).transpose();
+  for (std::size_t j : nearest) cov += (points[j] - mean) * (points[j] - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(cov);
+  return eigen.eigenvectors().col(0).normalized();
+}
+
+/// The widest angle between consecutive neighbours of point i around it in the plane
+/// normal to `normal`.
+double widest_gap(const std::vector<Vec3>& points, std::size_t i, const Vec3& normal, const std::vector<std::size_t>& around) {
+  const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
+  std::vector<double> angles;
+  for (std::size_t j : around) {
+    const Vec3 d = points[j] - points[i];
+    const double x = d.dot(e1), y = d.dot(e2);
+    if (x == 0.0 && y == 0.0) continue;
+    angles.push_back(std::atan2(y, x));
+  }
+  if (angles.size() < 2) return kTwoPi;
+  std::sort(angles.begin(), angles.end());
+  double widest = kTwoPi - (angles.back() - angles.front());
+  for (std::size_t m = 1; m < angles.size(); ++m) widest = std::max(widest, angles[m] - angles[m - 1]);
+  return widest;
+}
+
+/// The connected components of the boundary points (joined through `around`), each sorted,
+/// in increasing order of their lowest index.
+std::vector<std::vector<std::size_t>> components(const std::vector<char>& boundary, const Neighbourhoods& nb) {
+  const std::size_t n = boundary.size();
+  std::vector<char> seen(n, 0);
+  std::vector<std::vector<std::size_t>> out;
+  for (std::size_t first = 0; first < n; ++first) {
+    if (!boundary[first] || seen[first]) continue;
+    std::vector<std::size_t> members, stack{first};
+    seen[first] = 1;
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      members.push_back(i);
+      for (std::size_t j : nb.around[i]) {
+        if (boundary[j] && !seen[j]) {
+          seen[j] = 1;
+          stack.push_back(j);
+        }
+      }
+    }
+    std::sort(members.begin(), members.end());
+    out.push_back(std::move(members));
+  }
+  return out;
+}
+
+/// The longest path of the minimum spanning tree of a component (Prim from its lowest
+/// index; ties by index): the loop less one edge, the band's side branches left out.
+std::vector<std::size_t> longest_tree_path(const std::vector<Vec3>& points, const std::vector<std::size_t>& members, const std::vector<char>& boundary, const Neighbourhoods& nb) {
+  std::vector<std::vector<std::size_t>> tree(points.size());  // only members' entries used
+  std::vector<char> in_tree(points.size(), 0);
+  using Edge = std::tuple<double, std::size_t, std::size_t>;  // length, to, from
+  std::priority_queue<Edge, std::vector<Edge>, std::greater<Edge>> frontier;
+  auto add = [&](std::size_t i) {
+    in_tree[i] = 1;
+    for (std::size_t j : nb.around[i])
+      if (boundary[j] && !in_tree[j]) frontier.emplace((points[j] - points[i]).norm(), j, i);
+  };
+  add(members.front());
+  while (!frontier.empty()) {
+    const auto [length, to, from] = frontier.top();
+    frontier.pop();
+    if (in_tree[to]) continue;
+    tree[from].push_back(to);
+    tree[to].push_back(from);
+    add(to);
+  }
+  // Farthest member along the tree from `start` (ties: the lower index), with the parents.
+  std::vector<double> dist(points.size(), -1.0);
+  std::vector<std::size_t> parent(points.size(), SIZE_MAX);
+  auto farthest = [&](std::size_t start) {
+    for (std::size_t i : members) dist[i] = -1.0;
+    dist[start] = 0.0;
+    parent[start] = SIZE_MAX;
+    std::vector<std::size_t> stack{start};
+    std::size_t best = start;
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      if (dist[i] > dist[best] || (dist[i] == dist[best] && i < best)) best = i;
+      for (std::size_t j : tree[i]) {
+        if (dist[j] >= 0.0) continue;
+        dist[j] = dist[i] + (points[j] - points[i]).norm();
+        parent[j] = i;
+        stack.push_back(j);
+      }
+    }
+    return best;
+  };
+  const std::size_t a = farthest(members.front());
+  const std::size_t b = farthest(a);
+  std::vector<std::size_t> path;
+  for (std::size_t i = b; i != SIZE_MAX; i = parent[i]) path.push_back(i);
+  return path;
+}
+
+/// The closed path without its excursions: where two of its points lie within
+/// kShortcutSpacings local spacings of each other but more than kExcursionRatio times that
+/// apart along the path (less than half the perimeter), the path between them runs round a
+/// void of the sampling that opens onto the outline (or a slot narrower than that) and is cut
+/// off.
+std::vector<std::size_t> without_excursions(const std::vector<Vec3>& points, const std::vector<std::size_t>& path, const std::vector<double>& spacing) {
+  const std::size_t m = path.size();
+  std::vector<Vec3> at_points(m);
+  for (std::size_t i = 0; i < m; ++i) at_points[i] = points[path[i]];
+  std::vector<double> at(m + 1, 0.0);
+  for (std::size_t i = 0; i < m; ++i) at[i + 1] = at[i] + (at_points[(i + 1) % m] - at_points[i]).norm();
+  const double perimeter = at[m];
+  const CloudIndex index(at_points);
+  std::vector<char> removed(m, 0);
+  std::vector<std::size_t> near;
+  for (std::size_t i = 0; i < m; ++i) {
+    if (removed[i]) continue;
+    const double r = kShortcutSpacings * spacing[path[i]];
+    index.radius(at_points[i], r, near);
+    std::size_t skip_to = i;
+    double longest = kExcursionRatio * r;
+    for (std::size_t j : near) {
+      if (removed[j]) continue;
+      const double ahead = j >= i ? at[j] - at[i] : perimeter - at[i] + at[j];
+      if (ahead > longest && ahead < 0.5 * perimeter) {
+        longest = ahead;
+        skip_to = j;
+      }
+    }
+    for (std::size_t k = (i + 1) % m; k != skip_to && skip_to != i; k = (k + 1) % m) removed[k] = 1;
+  }
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < m; ++i)
+    if (!removed[i]) kept.push_back(path[i]);
+  return kept;
+}
+
+/// The closed path without its back-steps: a point where the path turns back (its two
+/// segments at more than 90 degrees) is dropped, until there is none; where the band of
+/// boundary points is two or three wide, the path crosses it to and fro.
+std::vector<std::size_t> without_back_steps(const std::vector<Vec3>& points, std::vector<std::size_t> path) {
+  for (bool changed = true; changed && path.size() > kMinLoopPoints;) {
+    changed = false;
+    std::vector<std::size_t> kept;
+    const std::size_t m = path.size();
+    for (std::size_t i = 0; i < m; ++i) {
+      const Vec3& prev = points[kept.empty() ? path[m - 1] : kept.back()];
+      const Vec3 in = points[path[i]] - prev, out = points[path[(i + 1) % m]] - points[path[i]];
+      if (in.dot(out) < 0.0 && m - (i + 1 - kept.size()) > kMinLoopPoints) {
+        changed = true;
+        continue;
+      }
+      kept.push_back(path[i]);
+    }
+    path = std::move(kept);
+  }
+  return path;
+}
+
+/// The closed polyline `p` (point i of path[i]) smoothed by a Gaussian of arc length, sigma
+/// `spacings` local spacings of each point.
+std::vector<Vec3> gaussian_smoothed(const std::vector<Vec3>& p, const Neighbourhoods& nb, const std::vector<std::size_t>& path, double spacings) {
+  const std::size_t m = p.size();
+  std::vector<Vec3> out(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    const double sigma = spacings * nb.spacing[path[i]], reach = kWindowSigmas * sigma;
+    Vec3 sum = p[i];
+    double weight = 1.0;
+    for (int direction : {1, -1}) {
+      double s = 0.0;
+      std::size_t previous = i;
+      for (std::size_t step = 1; step < m / 2; ++step) {
+        const std::size_t j = direction > 0 ? (i + step) % m : (i + m - step) % m;
+        s += (p[j] - p[previous]).norm();
+        previous = j;
+        if (s > reach) break;
+        const double w = std::exp(-0.5 * (s / sigma) * (s / sigma));
+        sum += w * p[j];
+        weight += w;
+      }
+    }
+    out[i] = sum / weight;
+  }
+  return out;
+}
+
+/// The closed path smoothed by a Gaussian of arc length (sigma kSmoothingSpacings local
+/// spacings) and pushed out along the surface onto or past the outermost points near it (of
+/// the whole cloud: where a void of the sampling opens onto the outline, the path runs round
+/// it, and the push takes the outline back to the points beyond).
+OutlineLoop smooth_loop(const std::vector<Vec3>& points, const std::vector<std::size_t>& path, const Neighbourhoods& nb, const std::vector<Vec3>& normal, const CloudIndex& index) {
+  const std::size_t m = path.size();
+  OutlineLoop loop;
+  loop.sources = path;
+  std::vector<Vec3> raw(m);
+  for (std::size_t i = 0; i < m; ++i) raw[i] = points[path[i]];
+  loop.points = gaussian_smoothed(raw, nb, path, kSmoothingSpacings);
+  // Out along the surface, perpendicular to the loop, to the outermost point in front of it.
+  std::vector<Vec3> outward(m, Vec3::Zero());
+  std::vector<double> offset(m, 0.0);
+  loop.normals.resize(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    const Vec3 tangent = loop.points[(i + 1) % m] - loop.points[(i + m - 1) % m];
+    Vec3 n = normal[path[i]];
+    if (i > 0 && n.dot(loop.normals[i - 1]) < 0.0) n = -n;
+    loop.normals[i] = n;
+    // Outwards: from the centroid of the cloud around the point, across the loop's tangent
+    // within the tangent plane.
+    std::vector<std::size_t> near;
+    index.radius(loop.points[i], kPushSpacings * nb.spacing[path[i]], near);
+    if (near.empty() || !(tangent.norm() > 0.0)) continue;
+    Vec3 centroid = Vec3::Zero();
+    for (std::size_t j : near) centroid += points[j];
+    centroid /= static_cast<double>(near.size());
+    const Vec3 t = tangent.normalized();
+    Vec3 out = loop.points[i] - centroid;
+    out -= out.dot(n) * n + out.dot(t) * t;
+    if (!(out.norm() > 0.0)) continue;
+    outward[i] = out.normalized();
+    // To the outermost point, and a margin of that point's own spacing beyond it (where the
+    // density changes, the spacing of the points that stand out there, not the loop's).
+    double reach_most = 0.0;
+    std::size_t outermost = path[i];
+    for (std::size_t j : near) {
+      const Vec3 d = points[j] - loop.points[i];
+      const double reach = d.dot(outward[i]);
+      if ((d - reach * outward[i]).norm() > kPushWidth * nb.spacing[path[i]]) continue;  // not in front of it
+      if (reach > reach_most || (reach == reach_most && j < outermost)) {
+        reach_most = reach;
+        outermost = j;
+      }
+    }
+    offset[i] = reach_most + kOutwardMargin * nb.spacing[outermost];
+  }
+  std::vector<Vec3> pushed = loop.points;
+  for (std::size_t i = 0; i < m; ++i) pushed[i] = loop.points[i] + offset[i] * outward[i];
+  // A light smoothing of the pushed loop: it follows the outermost points without their
+  // irregularity (whose wiggles would lengthen a side where the sampling is sparse, and
+  // shift the arc length along it).
+  if (kFinalSmoothing > 0.0) pushed = gaussian_smoothed(pushed, nb, path, kFinalSmoothing);
+  loop.points = std::move(pushed);
+  for (std::size_t i = 0; i < m; ++i) loop.perimeter += (loop.points[(i + 1) % m] - loop.points[i]).norm();
+  return loop;
+}
+
+}  // namespace
+
+Outline find_outline(const std::vector<Vec3>& points, std::size_t neighbours, int threads) {
+  const std::size_t n = points.size();
+  if (neighbours < 6) fail(ErrorCode::InvalidArgument, "outline: " + std::to_string(neighbours) + " neighbours; at least 6 are needed");
+  if (n < neighbours + 1) fail(ErrorCode::InvalidArgument, "outline: the cloud has " + std::to_string(n) + " points; at least " + std::to_string(neighbours + 1) + " are needed");
+  for (std::size_t i = 0; i < n; ++i)
+    if (!is_finite(points[i])) fail(ErrorCode::NonFinite, "outline: point " + std::to_string(i) + " has a non-finite coordinate");
+  const CloudIndex index(points);
+  const Neighbourhoods nb = neighbourhoods(index, points, neighbours, threads);
+  Outline outline;
+  outline.spacing = nb.spacing;
+  outline.boundary.assign(n, 0);
+  std::vector<Vec3> normal(n);
+  parallel_for(n, threads, [&](std::size_t i) {
+    normal[i] = fitted_normal(points, i, nb.nearest[i]);
+    outline.boundary[i] = widest_gap(points, i, normal[i], nb.around[i]) > kOutlineGap ? 1 : 0;
+  });
+  if (std::find(outline.boundary.begin(), outline.boundary.end(), 1) == outline.boundary.end()) fail(ErrorCode::Degenerate, "outline: no boundary point found (a closed surface has no outline)");
+
+  std::vector<OutlineLoop> loops;
+  for (const std::vector<std::size_t>& members : components(outline.boundary, nb)) {
+    if (members.size() < kMinLoopPoints) continue;
+    const std::vector<std::size_t> path = without_back_steps(points, without_excursions(points, longest_tree_path(points, members, outline.boundary, nb), nb.spacing));
+    if (path.size() < kMinLoopPoints) continue;
+    if ((points[path.front()] - points[path.back()]).norm() > kClosingSpacings * std::max(nb.spacing[path.front()], nb.spacing[path.back()])) continue;  // not closed
+    loops.push_back(smooth_loop(points, path, nb, normal, index));
+  }
+  if (loops.empty()) fail(ErrorCode::Degenerate, "outline: the boundary points of the cloud form no closed loop (a closed surface, or one whose border is sampled too thinly, has none)");
+  std::size_t outer = 0;
+  for (std::size_t k = 1; k < loops.size(); ++k)
+    if (loops[k].perimeter > loops[outer].perimeter) outer = k;
+  for (std::size_t k = 0; k < loops.size(); ++k) {
+    if (k == outer) outline.outer = std::move(loops[k]);
+    else outline.holes.push_back(std::move(loops[k]));
+  }
+  return outline;
+}
+
+}  // namespace dbs

@@ -1,0 +1,53 @@
+// The outline of an open scan: its boundary points, ordered into closed loops, smoothed.
+//
+// A point is a boundary point when its neighbourhood leaves an angular gap wider than
+// kOutlineGap in its local tangent plane (PCA over its nearest points). Its neighbourhood is
+// its `neighbours` nearest points together with the points that count it among theirs (the
+// reverse neighbours): where the density changes, a point on the sparse side has all its
+// nearest points on the dense side, but the sparse points around it name it, so it is not
+// taken for a boundary point.
+//
+// Boundary points joined by such neighbourhood edges form components; each of at least
+// kMinLoopPoints points is ordered by the longest path of its minimum spanning tree (the
+// loop less its longest edge; the band of boundary points, two or three wide, leaves only
+// short branches), smoothed by a Gaussian over kSmoothingSpacings local spacings of arc
+// length and pushed out along the surface, so that it runs on or just outside the outermost
+// points (no genuine point outside it). The loop of the longest perimeter is the outer one,
+// the others are holes.
+//
+// Deterministic (ties by point index) and invariant to scale and rigid motion (only ratios of
+// distances are used).
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "geometry.hpp"
+
+namespace dbs {
+
+constexpr double kOutlineGap = 2.0943951023931957;  ///< a boundary point's angular gap exceeds this (120 degrees)
+constexpr std::size_t kMinLoopPoints = 8;            ///< smaller components are noise
+constexpr double kSmoothingSpacings = 2.0;           ///< Gaussian window (sigma) of the smoothing, in local spacings
+constexpr std::size_t kSpacingNeighbour = 6;         ///< the local spacing: the distance to this nearest neighbour
+
+/// One closed loop of the outline.
+struct OutlineLoop {
+  std::vector<Vec3> points;          ///< smoothed, in order, first point not repeated
+  std::vector<std::size_t> sources;  ///< per point: the cloud point it was smoothed from
+  std::vector<Vec3> normals;         ///< per point: the cloud's unit normal there, oriented consistently along the loop
+  double perimeter = 0.0;
+};
+
+struct Outline {
+  std::vector<char> boundary;        ///< per cloud point: 1 for a boundary point
+  std::vector<double> spacing;       ///< per cloud point: its local spacing
+  OutlineLoop outer;                 ///< empty when no loop was found
+  std::vector<OutlineLoop> holes;    ///< in increasing order of their first source index
+};
+
+/// The outline of `points` with neighbourhoods of `neighbours` nearest points (at least 6).
+/// Throws Error: InvalidArgument (fewer than neighbours + 1 points, neighbours < 6),
+/// NonFinite, Degenerate (no closed loop: the cloud has no outline, e.g. a closed surface).
+Outline find_outline(const std::vector<Vec3>& points, std::size_t neighbours, int threads);
+
+}  // namespace dbs
