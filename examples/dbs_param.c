@@ -20,9 +20,12 @@
 
 static const char *const usage_text =
     "usage: dbs-param CLOUD BOUNDARY -o RESULT [options]\n"
+    "       dbs-param CLOUD --auto-boundary -o RESULT [options]\n"
     "\n"
     "Parameterizes the points of CLOUD (.xyz .txt .ply .obj .drc) inside the four-sided\n"
-    "BOUNDARY file and writes each point's (u,v) to RESULT (.csv .ply .drc).\n"
+    "BOUNDARY file, or inside the boundary found from the cloud's own outline\n"
+    "(--auto-boundary; dbs-boundary writes it to a file), and writes each point's (u,v) to\n"
+    "RESULT (.csv .ply .drc).\n"
     "\n"
     "options (defaults in brackets):\n"
     "  -o, --output PATH          result file (required)\n"
@@ -44,6 +47,9 @@ static const char *const usage_text =
     "  --own F                    subcloud 'own' limit, fraction of a patch diagonal [0.05]\n"
     "  --noise-floor 0|1          raise the target to the cloud's noise floor [1]\n"
     "  --repair 0|1               last-resort repair of points the surfaces never reached [1]\n"
+    "  --auto-boundary            no BOUNDARY: the cloud's outline cut at its four corners\n"
+    "                             (dbs_boundary_detect)\n"
+    "  --outline-neighbours N     neighbourhood of the outline with --auto-boundary [24]\n"
     "  --corner-tolerance F       corners of BOUNDARY may miss by F times its size; they are\n"
     "                             snapped together [1e-6]\n"
     "  --report DIR               also write a validation report into DIR: mesh files,\n"
@@ -148,6 +154,7 @@ static struct option_value library_options[] = {
     {"--loss-scale", DBS_OPT_LOSS_SCALE, VALUE_DOUBLE, NULL, 0, 0.0, 0},
     {"--ceres-iterations", DBS_OPT_CERES_MAX_ITERATIONS, VALUE_INT, NULL, 0, 0.0, 0},
     {"--ceres-tolerance", DBS_OPT_CERES_FUNCTION_TOLERANCE, VALUE_DOUBLE, NULL, 0, 0.0, 0},
+    {"--outline-neighbours", DBS_OPT_OUTLINE_NEIGHBOURS, VALUE_INT, NULL, 0, 0.0, 0},
 };
 #define LIBRARY_OPTION_COUNT (sizeof library_options / sizeof library_options[0])
 
@@ -157,6 +164,7 @@ struct command_line {
   const char *result_path;
   const char *report_dir;
   double corner_tolerance; /* relative; < 0: the library's default */
+  int auto_boundary;       /* the boundary from the cloud's outline, no BOUNDARY file */
   int quiet;
 };
 
@@ -231,6 +239,8 @@ static void parse_command_line(int argc, char **argv, struct command_line *cmd) 
         exit(EXIT_SUCCESS);
       } else if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
         cmd->quiet = 1;
+      } else if (strcmp(arg, "--auto-boundary") == 0) {
+        cmd->auto_boundary = 1;
       } else if (strcmp(arg, "-o") == 0 || (flag_length == 8 && strncmp(arg, "--output", 8) == 0)) {
         if (equals != NULL) {
           cmd->result_path = equals + 1;
@@ -272,7 +282,9 @@ static void parse_command_line(int argc, char **argv, struct command_line *cmd) 
       usage_error("unexpected argument '%s' (usage: dbs-param CLOUD BOUNDARY -o RESULT [options])", arg);
     }
   }
-  if (cmd->cloud_path == NULL || cmd->boundary_path == NULL) usage_error("missing %s (usage: dbs-param CLOUD BOUNDARY -o RESULT [options])", cmd->cloud_path == NULL ? "CLOUD and BOUNDARY" : "BOUNDARY");
+  if (cmd->auto_boundary && cmd->boundary_path != NULL) usage_error("--auto-boundary finds the boundary from the cloud: no BOUNDARY file '%s' with it", cmd->boundary_path);
+  if (cmd->auto_boundary && cmd->corner_tolerance >= 0.0) usage_error("--corner-tolerance applies to a BOUNDARY file, not to --auto-boundary");
+  if (cmd->cloud_path == NULL || (cmd->boundary_path == NULL && !cmd->auto_boundary)) usage_error("missing %s (usage: dbs-param CLOUD BOUNDARY -o RESULT [options])", cmd->cloud_path == NULL ? "CLOUD and BOUNDARY" : "BOUNDARY");
   if (cmd->result_path == NULL || cmd->result_path[0] == '\0') usage_error("missing -o RESULT (a .csv, .ply or .drc file)");
 }
 
@@ -489,8 +501,13 @@ int main(int argc, char **argv) {
     library_error(status, "reading the cloud");
     goto done;
   }
-  if ((status = cmd.corner_tolerance >= 0.0 ? dbs_boundary_load_tolerant(cmd.boundary_path, cmd.corner_tolerance, 1, &corner_snap, &boundary)
-                                            : dbs_boundary_load(cmd.boundary_path, &boundary)) != DBS_OK) {
+  if (cmd.auto_boundary) {
+    if ((status = dbs_boundary_detect(cloud, options, &boundary)) != DBS_OK) {
+      library_error(status, "finding the boundary from the cloud");
+      goto done;
+    }
+  } else if ((status = cmd.corner_tolerance >= 0.0 ? dbs_boundary_load_tolerant(cmd.boundary_path, cmd.corner_tolerance, 1, &corner_snap, &boundary)
+                                                   : dbs_boundary_load(cmd.boundary_path, &boundary)) != DBS_OK) {
     library_error(status, "reading the boundary");
     goto done;
   }
@@ -512,6 +529,11 @@ int main(int argc, char **argv) {
     goto done;
   }
   if (!cmd.quiet) print_summary(result, cmd.result_path, corner_snap);
+  if (!cmd.quiet && cmd.auto_boundary) {
+    size_t holes = 0;
+    dbs_boundary_hole_count(boundary, &holes);
+    printf("boundary        found from the cloud's outline, %zu hole%s inside it\n", holes, holes == 1 ? "" : "s");
+  }
   if (!cmd.quiet && cmd.report_dir != NULL) printf("report          %s\n", cmd.report_dir);
   exit_code = EXIT_SUCCESS;
 

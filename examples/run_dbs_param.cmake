@@ -1,10 +1,10 @@
-# Runs dbs-param once and checks what it did (a ctest driver, run with cmake -P).
+# Runs dbs-param (or dbs-boundary) once and checks what it did (a ctest driver, run with cmake -P).
 #
 #   cmake -DPROGRAM=dbs-param -DEXPECT_EXIT=N [-DSTDERR_REGEX=re] [-DSTDOUT_REGEX=re]
 #         [-DRESULT=path] -P run_dbs_param.cmake -- ARGUMENTS...
 #
 # Checks: the exit status is exactly N; a failure (N != 0) prints exactly one stderr line
-# starting "dbs-param: "; the regexes match stderr / stdout; RESULT (removed before the run)
+# starting with the program's name ("dbs-param: "); the regexes match stderr / stdout; RESULT (removed before the run)
 # exists afterwards and, for a .csv, has the header of FORMATS.md and one row per point of
 # the summary's "points" line.
 set(arguments "")
@@ -18,19 +18,20 @@ foreach(i RANGE ${last})
   endif()
 endforeach()
 
+get_filename_component(tool "${PROGRAM}" NAME_WE)
 if(RESULT)
   file(REMOVE "${RESULT}")
 endif()
 execute_process(COMMAND "${PROGRAM}" ${arguments}
   RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-message(STATUS "dbs-param ${arguments}\n-- exit status: ${status}\n-- stdout:\n${out}-- stderr:\n${err}")
+message(STATUS "${tool} ${arguments}\n-- exit status: ${status}\n-- stdout:\n${out}-- stderr:\n${err}")
 
 if(NOT "${status}" STREQUAL "${EXPECT_EXIT}")
   message(FATAL_ERROR "exit status ${status}, expected ${EXPECT_EXIT}")
 endif()
 if(NOT EXPECT_EXIT EQUAL 0)
-  if(NOT err MATCHES "^dbs-param: [^\n]+\n$")
-    message(FATAL_ERROR "a failure must print exactly one line 'dbs-param: <message>' on stderr")
+  if(NOT err MATCHES "^${tool}: [^\n]+\n$")
+    message(FATAL_ERROR "a failure must print exactly one line '${tool}: <message>' on stderr")
   endif()
 endif()
 if(DEFINED STDERR_REGEX AND NOT STDERR_REGEX STREQUAL "" AND NOT err MATCHES "${STDERR_REGEX}")

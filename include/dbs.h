@@ -419,7 +419,7 @@ DBS_API int dbs_options_set_warning(dbs_options *options, dbs_warning_fn fn, voi
  *  points (a void of the sampling that opens onto the outline, or a slot narrower than three
  *  point spacings, is bridged). The longest loop is the outer one; the others are holes
  *  (dbs_boundary_hole_count). It is cut at four corners: where it turns most in the surface's
- *  tangent plane (the four largest maxima at least an eighth of the perimeter apart), or, for
+ *  tangent plane (the four largest maxima at least 5% of the perimeter apart), or, for
  *  a round outline (the fourth turning below 30 degrees), the loop points nearest to the
  *  corners of its minimum-area bounding rectangle in the plane of its principal axes. Of
  *  those, the one that comes from the cloud point of the lowest index is (0,0), and the bottom
