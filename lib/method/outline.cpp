@@ -22,8 +22,14 @@ namespace dbs {
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586;
-/// A path's ends closer than this x the loop's median spacing close it into a loop.
-constexpr double kClosingSpacings = 5.0;
+/// A hole's perimeter is at least this many local spacings (a circle about 5 spacings
+/// across); smaller loops are voids of the sampling.
+constexpr double kMinHoleSpacings = 16.0;
+/// ... and its points lie at most this many local spacings apart on average.
+constexpr double kMaxHoleStep = 2.0;
+/// Boundary points within this many local spacings of each other are linked (and a path's
+/// ends that close: a loop).
+constexpr double kBridgeSpacings = 4.0;
 /// The smoothing sums over this many sigmas of arc length on either side.
 constexpr double kWindowSigmas = 3.0;
 /// The pushed loop is smoothed again over this many local spacings (sigma).
@@ -41,39 +47,50 @@ constexpr double kShortcutSpacings = 3.0;
 /// ... and more than this x that apart along the path.
 constexpr double kExcursionRatio = 3.0;
 
-/// Each point's nearest points (itself left out) and its local spacing.
+/// Each point's nearest points (itself left out), the points that count it among theirs
+/// (reverse nearest), and its local spacing. Flat arrays of 32-bit indices: a cloud of a million
+/// points takes about 200 MB here.
 struct Neighbourhoods {
-  std::vector<std::vector<std::size_t>> nearest;  ///< the k nearest, nearest first
-  std::vector<std::vector<std::size_t>> around;   ///< nearest and reverse nearest, sorted
+  std::size_t k = 0;
+  std::vector<std::uint32_t> nearest;        ///< k per point, nearest first
+  std::vector<std::size_t> reverse_start;    ///< point i's reverse nearest: reverse[reverse_start[i] .. reverse_start[i+1])
+  std::vector<std::uint32_t> reverse;
   std::vector<double> spacing;
+
+  std::vector<std::size_t> nearest_of(std::size_t i) const { return {nearest.begin() + static_cast<std::ptrdiff_t>(i * k), nearest.begin() + static_cast<std::ptrdiff_t>((i + 1) * k)}; }
+  /// The nearest and the reverse nearest of point i, sorted, each once.
+  std::vector<std::size_t> around(std::size_t i) const {
+    std::vector<std::size_t> a = nearest_of(i);
+    a.insert(a.end(), reverse.begin() + static_cast<std::ptrdiff_t>(reverse_start[i]), reverse.begin() + static_cast<std::ptrdiff_t>(reverse_start[i + 1]));
+    std::sort(a.begin(), a.end());
+    a.erase(std::unique(a.begin(), a.end()), a.end());
+    return a;
+  }
 };
 
 Neighbourhoods neighbourhoods(const CloudIndex& index, const std::vector<Vec3>& points, std::size_t k, int threads) {
   const std::size_t n = points.size();
+  if (n > std::numeric_limits<std::uint32_t>::max()) fail(ErrorCode::OutOfRange, "outline: the cloud has " + std::to_string(n) + " points; at most 4294967295 are supported");
   Neighbourhoods nb;
-  nb.nearest.resize(n);
-  nb.around.resize(n);
+  nb.k = k;
+  nb.nearest.resize(n * k);
   nb.spacing.resize(n);
   parallel_for(n, threads, [&](std::size_t i) {
     std::vector<std::size_t> ids;
     std::vector<double> d2;
     index.knn(points[i], k + 1, ids, d2);
-    std::vector<std::size_t>& own = nb.nearest[i];
-    for (std::size_t m = 0; m < ids.size() && own.size() < k; ++m)
-      if (ids[m] != i) own.push_back(ids[m]);
+    std::size_t filled = 0;
+    for (std::size_t m = 0; m < ids.size() && filled < k; ++m)
+      if (ids[m] != i) nb.nearest[i * k + filled++] = static_cast<std::uint32_t>(ids[m]);
     nb.spacing[i] = std::sqrt(d2[std::min(kSpacingNeighbour, d2.size() - 1)]);
   });
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j : nb.nearest[i]) {
-      nb.around[i].push_back(j);
-      nb.around[j].push_back(i);
-    }
-  }
-  parallel_for(n, threads, [&](std::size_t i) {
-    std::vector<std::size_t>& a = nb.around[i];
-    std::sort(a.begin(), a.end());
-    a.erase(std::unique(a.begin(), a.end()), a.end());
-  });
+  nb.reverse_start.assign(n + 1, 0);
+  for (std::uint32_t j : nb.nearest) ++nb.reverse_start[j + 1];
+  for (std::size_t i = 0; i < n; ++i) nb.reverse_start[i + 1] += nb.reverse_start[i];
+  nb.reverse.resize(nb.nearest.size());
+  std::vector<std::size_t> fill(nb.reverse_start.begin(), nb.reverse_start.end() - 1);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t m = 0; m < k; ++m) nb.reverse[fill[nb.nearest[i * k + m]]++] = static_cast<std::uint32_t>(i);
   return nb;
 }
 
@@ -106,24 +123,60 @@ double widest_gap(const std::vector<Vec3>& points, std::size_t i, const Vec3& no
   return widest;
 }
 
-/// The connected components of the boundary points (joined through `around`), each sorted,
-/// in increasing order of their lowest index.
-std::vector<std::vector<std::size_t>> components(const std::vector<char>& boundary, const Neighbourhoods& nb) {
-  const std::size_t n = boundary.size();
-  std::vector<char> seen(n, 0);
-  std::vector<std::vector<std::size_t>> out;
-  for (std::size_t first = 0; first < n; ++first) {
-    if (!boundary[first] || seen[first]) continue;
-    std::vector<std::size_t> members, stack{first};
+/// The boundary points joined to each other: two are linked when they lie within
+/// kBridgeSpacings times the larger of their local spacings (farther than their nearest
+/// points reach: where the sampling leaves the outline's band of boundary points thin, the
+/// band has gaps of several spacings).
+struct BoundaryGraph {
+  std::vector<std::size_t> ids;                   ///< the boundary points, increasing
+  std::vector<std::vector<std::uint32_t>> links;  ///< per slot (index into ids): linked slots, increasing
+};
+
+BoundaryGraph boundary_graph(const std::vector<Vec3>& points, const std::vector<char>& boundary, const std::vector<double>& spacing, int threads) {
+  BoundaryGraph g;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (boundary[i]) g.ids.push_back(i);
+  std::vector<std::uint32_t> slot(points.size(), 0);
+  for (std::size_t s = 0; s < g.ids.size(); ++s) slot[g.ids[s]] = static_cast<std::uint32_t>(s);
+  const CloudIndex index(points, g.ids);
+  std::vector<std::vector<std::uint32_t>> reached(g.ids.size());
+  parallel_for(g.ids.size(), threads, [&](std::size_t s) {
+    std::vector<std::size_t> near;
+    index.radius(points[g.ids[s]], kBridgeSpacings * spacing[g.ids[s]], near);
+    for (std::size_t j : near)
+      if (j != g.ids[s]) reached[s].push_back(slot[j]);
+  });
+  g.links.resize(g.ids.size());
+  for (std::size_t s = 0; s < reached.size(); ++s) {
+    for (std::uint32_t t : reached[s]) {
+      g.links[s].push_back(t);
+      g.links[t].push_back(static_cast<std::uint32_t>(s));
+    }
+  }
+  parallel_for(g.links.size(), threads, [&](std::size_t s) {
+    std::sort(g.links[s].begin(), g.links[s].end());
+    g.links[s].erase(std::unique(g.links[s].begin(), g.links[s].end()), g.links[s].end());
+  });
+  return g;
+}
+
+/// The connected components of the boundary graph (slots, each component increasing), in
+/// increasing order of their lowest slot.
+std::vector<std::vector<std::uint32_t>> components(const BoundaryGraph& g) {
+  std::vector<char> seen(g.ids.size(), 0);
+  std::vector<std::vector<std::uint32_t>> out;
+  for (std::size_t first = 0; first < g.ids.size(); ++first) {
+    if (seen[first]) continue;
+    std::vector<std::uint32_t> members, stack{static_cast<std::uint32_t>(first)};
     seen[first] = 1;
     while (!stack.empty()) {
-      const std::size_t i = stack.back();
+      const std::uint32_t s = stack.back();
       stack.pop_back();
-      members.push_back(i);
-      for (std::size_t j : nb.around[i]) {
-        if (boundary[j] && !seen[j]) {
-          seen[j] = 1;
-          stack.push_back(j);
+      members.push_back(s);
+      for (std::uint32_t t : g.links[s]) {
+        if (!seen[t]) {
+          seen[t] = 1;
+          stack.push_back(t);
         }
       }
     }
@@ -133,19 +186,25 @@ std::vector<std::vector<std::size_t>> components(const std::vector<char>& bounda
   return out;
 }
 
-/// The longest path of the minimum spanning tree of a component (Prim from its lowest
-/// index; ties by index): the loop less one edge, the band's side branches left out.
-std::vector<std::size_t> longest_tree_path(const std::vector<Vec3>& points, const std::vector<std::size_t>& members, const std::vector<char>& boundary, const Neighbourhoods& nb) {
-  std::vector<std::vector<std::size_t>> tree(points.size());  // only members' entries used
-  std::vector<char> in_tree(points.size(), 0);
-  using Edge = std::tuple<double, std::size_t, std::size_t>;  // length, to, from
+/// The longest path (point indices) of the minimum spanning tree of a component (Prim from
+/// its lowest slot; ties by slot): the loop less one edge, the band's side branches left out.
+std::vector<std::size_t> longest_tree_path(const std::vector<Vec3>& points, const BoundaryGraph& g, const std::vector<std::uint32_t>& members, std::vector<std::uint32_t>& local) {
+  // local[slot]: the member's place in `members` (scratch of the graph's size, reused).
+  const std::size_t m = members.size();
+  for (std::size_t k = 0; k < m; ++k) local[members[k]] = static_cast<std::uint32_t>(k);
+  auto at = [&](std::size_t k) -> const Vec3& { return points[g.ids[members[k]]]; };
+  std::vector<std::vector<std::uint32_t>> tree(m);
+  std::vector<char> in_tree(m, 0);
+  using Edge = std::tuple<double, std::uint32_t, std::uint32_t>;  // length, to, from (local)
   std::priority_queue<Edge, std::vector<Edge>, std::greater<Edge>> frontier;
-  auto add = [&](std::size_t i) {
-    in_tree[i] = 1;
-    for (std::size_t j : nb.around[i])
-      if (boundary[j] && !in_tree[j]) frontier.emplace((points[j] - points[i]).norm(), j, i);
+  auto add = [&](std::uint32_t k) {
+    in_tree[k] = 1;
+    for (std::uint32_t t : g.links[members[k]]) {
+      const std::uint32_t j = local[t];
+      if (!in_tree[j]) frontier.emplace((at(j) - at(k)).norm(), j, k);
+    }
   };
-  add(members.front());
+  add(0);
   while (!frontier.empty()) {
     const auto [length, to, from] = frontier.top();
     frontier.pop();
@@ -154,32 +213,32 @@ std::vector<std::size_t> longest_tree_path(const std::vector<Vec3>& points, cons
     tree[to].push_back(from);
     add(to);
   }
-  // Farthest member along the tree from `start` (ties: the lower index), with the parents.
-  std::vector<double> dist(points.size(), -1.0);
-  std::vector<std::size_t> parent(points.size(), SIZE_MAX);
-  auto farthest = [&](std::size_t start) {
-    for (std::size_t i : members) dist[i] = -1.0;
+  // Farthest member along the tree from `start` (ties: the lower slot), with the parents.
+  std::vector<double> dist(m, -1.0);
+  std::vector<std::uint32_t> parent(m, std::numeric_limits<std::uint32_t>::max());
+  auto farthest = [&](std::uint32_t start) {
+    std::fill(dist.begin(), dist.end(), -1.0);
     dist[start] = 0.0;
-    parent[start] = SIZE_MAX;
-    std::vector<std::size_t> stack{start};
-    std::size_t best = start;
+    parent[start] = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> stack{start};
+    std::uint32_t best = start;
     while (!stack.empty()) {
-      const std::size_t i = stack.back();
+      const std::uint32_t k = stack.back();
       stack.pop_back();
-      if (dist[i] > dist[best] || (dist[i] == dist[best] && i < best)) best = i;
-      for (std::size_t j : tree[i]) {
+      if (dist[k] > dist[best] || (dist[k] == dist[best] && k < best)) best = k;
+      for (std::uint32_t j : tree[k]) {
         if (dist[j] >= 0.0) continue;
-        dist[j] = dist[i] + (points[j] - points[i]).norm();
-        parent[j] = i;
+        dist[j] = dist[k] + (at(j) - at(k)).norm();
+        parent[j] = k;
         stack.push_back(j);
       }
     }
     return best;
   };
-  const std::size_t a = farthest(members.front());
-  const std::size_t b = farthest(a);
+  const std::uint32_t a = farthest(0);
+  const std::uint32_t b = farthest(a);
   std::vector<std::size_t> path;
-  for (std::size_t i = b; i != SIZE_MAX; i = parent[i]) path.push_back(i);
+  for (std::uint32_t k = b; k != std::numeric_limits<std::uint32_t>::max(); k = parent[k]) path.push_back(g.ids[members[k]]);
   return path;
 }
 
@@ -343,17 +402,20 @@ Outline find_outline(const std::vector<Vec3>& points, std::size_t neighbours, in
   outline.boundary.assign(n, 0);
   std::vector<Vec3> normal(n);
   parallel_for(n, threads, [&](std::size_t i) {
-    normal[i] = fitted_normal(points, i, nb.nearest[i]);
-    outline.boundary[i] = widest_gap(points, i, normal[i], nb.around[i]) > kOutlineGap ? 1 : 0;
+    normal[i] = fitted_normal(points, i, nb.nearest_of(i));
+    outline.boundary[i] = widest_gap(points, i, normal[i], nb.around(i)) > kOutlineGap ? 1 : 0;
   });
   if (std::find(outline.boundary.begin(), outline.boundary.end(), 1) == outline.boundary.end()) fail(ErrorCode::Degenerate, "outline: no boundary point found (a closed surface has no outline)");
 
+  const BoundaryGraph graph = boundary_graph(points, outline.boundary, nb.spacing, threads);
+  std::vector<std::uint32_t> local(graph.ids.size(), 0);
   std::vector<OutlineLoop> loops;
-  for (const std::vector<std::size_t>& members : components(outline.boundary, nb)) {
+  for (const std::vector<std::uint32_t>& members : components(graph)) {
     if (members.size() < kMinLoopPoints) continue;
-    const std::vector<std::size_t> path = without_back_steps(points, without_excursions(points, longest_tree_path(points, members, outline.boundary, nb), nb.spacing));
+    const std::vector<std::size_t> path = without_back_steps(points, without_excursions(points, longest_tree_path(points, graph, members, local), nb.spacing));
     if (path.size() < kMinLoopPoints) continue;
-    if ((points[path.front()] - points[path.back()]).norm() > kClosingSpacings * std::max(nb.spacing[path.front()], nb.spacing[path.back()])) continue;  // not closed
+    // A closed loop: its ends no farther apart than a link (the spanning tree left out one).
+    if ((points[path.front()] - points[path.back()]).norm() > kBridgeSpacings * std::max(nb.spacing[path.front()], nb.spacing[path.back()])) continue;
     loops.push_back(smooth_loop(points, path, nb, normal, index));
   }
   if (loops.empty()) fail(ErrorCode::Degenerate, "outline: the boundary points of the cloud form no closed loop (a closed surface, or one whose border is sampled too thinly, has none)");
@@ -361,8 +423,17 @@ Outline find_outline(const std::vector<Vec3>& points, std::size_t neighbours, in
   for (std::size_t k = 1; k < loops.size(); ++k)
     if (loops[k].perimeter > loops[outer].perimeter) outer = k;
   for (std::size_t k = 0; k < loops.size(); ++k) {
-    if (k == outer) outline.outer = std::move(loops[k]);
-    else outline.holes.push_back(std::move(loops[k]));
+    if (k == outer) {
+      outline.outer = std::move(loops[k]);
+      continue;
+    }
+    // A loop round a few spacings of nothing is a void of the sampling, not a hole; one whose
+    // points lie several spacings apart joins scattered points, not a border.
+    std::vector<double> spacings;
+    for (std::size_t i : loops[k].sources) spacings.push_back(nb.spacing[i]);
+    std::nth_element(spacings.begin(), spacings.begin() + static_cast<std::ptrdiff_t>(spacings.size() / 2), spacings.end());
+    const double spacing = spacings[spacings.size() / 2], step = loops[k].perimeter / static_cast<double>(loops[k].points.size());
+    if (loops[k].perimeter >= kMinHoleSpacings * spacing && step <= kMaxHoleStep * spacing) outline.holes.push_back(std::move(loops[k]));
   }
   return outline;
 }

@@ -7,13 +7,16 @@
 // nearest points on the dense side, but the sparse points around it name it, so it is not
 // taken for a boundary point.
 //
-// Boundary points joined by such neighbourhood edges form components; each of at least
-// kMinLoopPoints points is ordered by the longest path of its minimum spanning tree (the
-// loop less its longest edge; the band of boundary points, two or three wide, leaves only
-// short branches), smoothed by a Gaussian over kSmoothingSpacings local spacings of arc
-// length and pushed out along the surface, so that it runs on or just outside the outermost
-// points (no genuine point outside it). The loop of the longest perimeter is the outer one,
-// the others are holes.
+// Boundary points within kBridgeSpacings (outline.cpp) local spacings of each other are linked
+// (the band of boundary points along a randomly sampled outline is thin and has gaps of
+// several spacings); each component of at least kMinLoopPoints points is ordered by the
+// longest path of its minimum spanning tree (the loop less its longest edge; the band, two or
+// three wide, leaves only short branches), rid of excursions round voids that open onto it
+// and of back-steps across the band, smoothed by a Gaussian over kSmoothingSpacings local
+// spacings of arc length, pushed out along the surface so that it runs on or just outside the
+// outermost points (no genuine point outside it), and smoothed once more lightly. The loop of
+// the longest perimeter is the outer one, the others are holes, unless they are voids of the
+// sampling (a perimeter below 16 local spacings, or points more than 2 spacings apart).
 //
 // Deterministic (ties by point index) and invariant to scale and rigid motion (only ratios of
 // distances are used).
