@@ -28,7 +28,8 @@ static const char *const usage_text =
     "                             the corners (0,0), (1,0), (1,1), (0,1): the outline is cut\n"
     "                             at its points nearest to them [where it turns most]\n"
     "  --outline-neighbours N     nearest points a point's angular gap is judged on [24]\n"
-    "  --threads N                worker threads, 0 = all hardware threads [0]\n"
+    "  --threads N                worker threads, 0 = all hardware threads [0]; with\n"
+    "                             --corners all of them\n"
     "  -q, --quiet                no summary\n"
     "  -h, --help                 this text\n"
     "  --version                  the version of libdbs\n";
@@ -82,7 +83,7 @@ struct command_line {
   const char *cloud_path;
   const char *boundary_path;
   const char *corners_text;
-  int neighbours; /* 0: the default */
+  int neighbours; /* -1: the default */
   int threads;
   int quiet;
 };
@@ -102,6 +103,7 @@ static int flag_is(const char *arg, const char *flag, size_t *flag_length) {
 
 static void parse_command_line(int argc, char **argv, struct command_line *cmd) {
   memset(cmd, 0, sizeof *cmd);
+  cmd->neighbours = -1;
   for (int i = 1; i < argc; ++i) {
     const char *arg = argv[i];
     size_t n = 0;
@@ -134,7 +136,7 @@ static void parse_command_line(int argc, char **argv, struct command_line *cmd) 
   }
   if (cmd->cloud_path == NULL) usage_error("missing CLOUD (usage: dbs-boundary CLOUD -o BOUNDARY [options])");
   if (cmd->boundary_path == NULL || cmd->boundary_path[0] == '\0') usage_error("missing -o BOUNDARY (the boundary file to write)");
-  if (cmd->corners_text != NULL && cmd->neighbours != 0) usage_error("--outline-neighbours applies to the detection; --corners uses the default neighbourhood");
+  if (cmd->corners_text != NULL && cmd->neighbours != -1) usage_error("--outline-neighbours applies to the detection; --corners uses the default neighbourhood");
 }
 
 static void print_summary(const dbs_boundary *boundary, size_t points, const char *path) {
@@ -175,7 +177,7 @@ int main(int argc, char **argv) {
     library_error(status, "creating options");
     return EXIT_FAILURE;
   }
-  if (cmd.neighbours != 0 && (status = dbs_options_set_int(options, DBS_OPT_OUTLINE_NEIGHBOURS, cmd.neighbours)) != DBS_OK) {
+  if (cmd.neighbours != -1 && (status = dbs_options_set_int(options, DBS_OPT_OUTLINE_NEIGHBOURS, cmd.neighbours)) != DBS_OK) {
     library_error(status, "--outline-neighbours");
     goto done;
   }

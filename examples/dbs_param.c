@@ -284,7 +284,8 @@ static void parse_command_line(int argc, char **argv, struct command_line *cmd) 
   }
   if (cmd->auto_boundary && cmd->boundary_path != NULL) usage_error("--auto-boundary finds the boundary from the cloud: no BOUNDARY file '%s' with it", cmd->boundary_path);
   if (cmd->auto_boundary && cmd->corner_tolerance >= 0.0) usage_error("--corner-tolerance applies to a BOUNDARY file, not to --auto-boundary");
-  if (cmd->cloud_path == NULL || (cmd->boundary_path == NULL && !cmd->auto_boundary)) usage_error("missing %s (usage: dbs-param CLOUD BOUNDARY -o RESULT [options])", cmd->cloud_path == NULL ? "CLOUD and BOUNDARY" : "BOUNDARY");
+  if (cmd->cloud_path == NULL || (cmd->boundary_path == NULL && !cmd->auto_boundary))
+    usage_error("missing %s (usage: dbs-param CLOUD BOUNDARY -o RESULT [options])", cmd->cloud_path == NULL ? (cmd->auto_boundary ? "CLOUD" : "CLOUD and BOUNDARY") : "BOUNDARY");
   if (cmd->result_path == NULL || cmd->result_path[0] == '\0') usage_error("missing -o RESULT (a .csv, .ply or .drc file)");
 }
 

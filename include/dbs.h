@@ -317,7 +317,7 @@ typedef struct dbs_options dbs_options;
 #define DBS_OPT_LOSS 12             /* int; DBS_LOSS_NONE; [0, 3]. \since 0.4. Robust loss of the Ceres solver (DBS_LOSS_*; no effect with the linear one): each point's weight in a node's mean is scaled by rho'(d^2) of its offset d along the node's line, so gross outliers of a scan pull the surface less, and the error that decides whether to grow the grid or subdivide (and whether a leaf met the target) is the mean of sqrt(rho(d^2)) instead of the mean distance d, so outliers do not force subdivision. DBS_STAT_MEAN_DISTANCE stays the plain mean. */
 #define DBS_OPT_LOSS_SCALE 13       /* double; 0 = derived; >= 0. \since 0.4. Scale a of the loss in cloud units (distances below it count fully); 0: 3 sigma of the cloud's estimated noise (DBS_STAT_NOISE), at least the spacing h (DBS_STAT_LENGTH_SCALE), so a scaled cloud gets a scaled loss. The one used is DBS_STAT_LOSS_SCALE. A scale outside [1e-6, 1e6] times h makes dbs_parameterize fail with DBS_ERR_OUT_OF_RANGE. */
 #define DBS_OPT_CERES_MAX_ITERATIONS 14      /* int; 25; [1, 1000]. \since 0.4. Ceres iterations per solve at most (a curve takes one to four solves, twice that with a loss). */
-#define DBS_OPT_OUTLINE_NEIGHBOURS 16           /* int; 24; [6, 256]. \since 0.4. Nearest points of a neighbourhood in dbs_boundary_detect and dbs_boundary_from_corners: a point is on the cloud's outline when they leave an angular gap above 120 degrees around it (with the points that count it among theirs). Larger: fewer false outline points inside a sparse or noisy cloud, a coarser outline. */
+#define DBS_OPT_OUTLINE_NEIGHBOURS 16           /* int; 24; [6, 256]. \since 0.4. Nearest points of a neighbourhood in dbs_boundary_detect (dbs_boundary_from_corners uses the default): a point is on the cloud's outline when they leave an angular gap above 120 degrees around it (with the points that count it among theirs). Larger: fewer false outline points inside a sparse or noisy cloud, a coarser outline. */
 #define DBS_OPT_CERES_FUNCTION_TOLERANCE 15  /* double; 1e-6; [1e-16, 1]. \since 0.4. Ceres stops when an iteration changes the cost by less than this fraction. */
 
 /* Solvers for DBS_OPT_SOLVER (pinned; \since 0.1). */
@@ -417,8 +417,10 @@ DBS_API int dbs_options_set_warning(dbs_options *options, dbs_warning_fn fn, voi
  *  leave an angular gap above 120 degrees in their tangent plane), ordered into closed loops,
  *  smoothed along their arc length and pushed out to run on or just outside the outermost
  *  points (a void of the sampling that opens onto the outline, or a slot narrower than three
- *  point spacings, is bridged). The longest loop is the outer one; the others are holes
- *  (dbs_boundary_hole_count). It is cut at four corners: where it turns most in the surface's
+ *  point spacings, is bridged); coincident points count once. The loop enclosing the largest
+ *  area in the cloud's principal plane is the outer one; the others inside it are holes
+ *  (dbs_boundary_hole_count), unless they are shorter than 16 point spacings (a hole less
+ *  than about 5 spacings across cannot be told from a void of the sampling). It is cut at four corners: where it turns most in the surface's
  *  tangent plane (the four largest maxima at least 5% of the perimeter apart), or, for
  *  a round outline (the fourth turning below 30 degrees), the loop points nearest to the
  *  corners of its minimum-area bounding rectangle in the plane of its principal axes. Of
@@ -428,14 +430,18 @@ DBS_API int dbs_options_set_warning(dbs_options *options, dbs_warning_fn fn, voi
  *  DBS_OPT_OUTLINE_NEIGHBOURS are read). Measured on open analytic surfaces of 10,000 random
  *  points (tests/core/test_boundary_detect.cpp): the outline within 1.4 point spacings of the
  *  true one, the corners within 3.
- *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (fewer points than the
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (fewer distinct points than the
  *  neighbourhood), DBS_ERR_DEGENERATE (no closed outline: a closed surface, or a border
- *  sampled too thinly; no four distinct corners), DBS_ERR_NO_MEMORY. \since 0.4 */
+ *  sampled too thinly; most points looking like border points, as scan lines far apart: a
+ *  larger DBS_OPT_OUTLINE_NEIGHBOURS; separate pieces; no four distinct corners; sides the
+ *  boundary checks refuse), DBS_ERR_OUT_OF_RANGE (more than 2^32 points, a boundary beyond
+ *  the supported magnitudes), DBS_ERR_NO_MEMORY. \since 0.4 */
 DBS_API int dbs_boundary_detect(const dbs_cloud *cloud, const dbs_options *options, dbs_boundary **out);
 /** The outer loop of dbs_boundary_detect's outline cut at the loop points nearest to the
  *  four points `corners_xyz` (x, y, z of each), which become (0,0), (1,0), (1,1), (0,1) in
- *  that order; they must follow each other around the outline, in either direction. The
- *  default options (see dbs_boundary_detect).
+ *  that order; they must follow each other around the outline, in either direction. With the
+ *  default options (DBS_OPT_OUTLINE_NEIGHBOURS 24, all hardware threads; see
+ *  dbs_boundary_detect).
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_NON_FINITE (a corner), DBS_ERR_INVALID_ARGUMENT (two
  *  corners at one loop point, corners not in cyclic order, a corner farther than 5% of the
  *  outline's perimeter from it: the message says which and how far), DBS_ERR_DEGENERATE (as

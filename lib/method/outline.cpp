@@ -310,6 +310,10 @@ std::vector<Vec3> gaussian_smoothed(const std::vector<Vec3>& p, const Neighbourh
     const double sigma = spacings * nb.spacing[path[i]], reach = kWindowSigmas * sigma;
     Vec3 sum = p[i];
     double weight = 1.0;
+    if (!(sigma > 0.0)) {
+      out[i] = p[i];
+      continue;
+    }
     for (int direction : {1, -1}) {
       double s = 0.0;
       std::size_t previous = i;
@@ -387,14 +391,45 @@ OutlineLoop smooth_loop(const std::vector<Vec3>& points, const std::vector<std::
   return loop;
 }
 
-}  // namespace
 
-Outline find_outline(const std::vector<Vec3>& points, std::size_t neighbours, int threads) {
+/// The plane of a cloud's two principal axes.
+struct PlaneFrame {
+  Vec3 origin, e1, e2;
+  Vec2 project(const Vec3& p) const { return {(p - origin).dot(e1), (p - origin).dot(e2)}; }
+};
+
+PlaneFrame principal_plane(const std::vector<Vec3>& points) {
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const Vec3& p : points) cov += (p - mean) * (p - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(cov);
+  return {mean, eigen.eigenvectors().col(2), eigen.eigenvectors().col(1)};
+}
+
+double signed_area(const std::vector<Vec2>& polygon) {
+  double twice = 0.0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Vec2 &a = polygon[i], &b = polygon[(i + 1) % polygon.size()];
+    twice += a.x() * b.y() - a.y() * b.x();
+  }
+  return 0.5 * twice;
+}
+
+/// Whether q lies inside the closed polygon (even-odd rule).
+bool inside(const std::vector<Vec2>& polygon, const Vec2& q) {
+  bool in = false;
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const Vec2 &a = polygon[i], &b = polygon[j];
+    if ((a.y() > q.y()) != (b.y() > q.y()) && q.x() < (b.x() - a.x()) * (q.y() - a.y()) / (b.y() - a.y()) + a.x()) in = !in;
+  }
+  return in;
+}
+
+/// find_outline on a cloud without coincident points.
+Outline outline_of_distinct(const std::vector<Vec3>& points, std::size_t neighbours, int threads) {
   const std::size_t n = points.size();
-  if (neighbours < 6) fail(ErrorCode::InvalidArgument, "outline: " + std::to_string(neighbours) + " neighbours; at least 6 are needed");
-  if (n < neighbours + 1) fail(ErrorCode::InvalidArgument, "outline: the cloud has " + std::to_string(n) + " points; at least " + std::to_string(neighbours + 1) + " are needed");
-  for (std::size_t i = 0; i < n; ++i)
-    if (!is_finite(points[i])) fail(ErrorCode::NonFinite, "outline: point " + std::to_string(i) + " has a non-finite coordinate");
   const CloudIndex index(points);
   const Neighbourhoods nb = neighbourhoods(index, points, neighbours, threads);
   Outline outline;
@@ -405,7 +440,13 @@ Outline find_outline(const std::vector<Vec3>& points, std::size_t neighbours, in
     normal[i] = fitted_normal(points, i, nb.nearest_of(i));
     outline.boundary[i] = widest_gap(points, i, normal[i], nb.around(i)) > kOutlineGap ? 1 : 0;
   });
-  if (std::find(outline.boundary.begin(), outline.boundary.end(), 1) == outline.boundary.end()) fail(ErrorCode::Degenerate, "outline: no boundary point found (a closed surface has no outline)");
+  const std::size_t flagged = static_cast<std::size_t>(std::count(outline.boundary.begin(), outline.boundary.end(), 1));
+  if (flagged == 0) fail(ErrorCode::Degenerate, "outline: no boundary point found (a closed surface has no outline)");
+  // A neighbourhood that leaves most points with a gap does not span the surface (scan lines
+  // far apart, a cloud too sparse for it): no outline can be told there.
+  if (2 * flagged > n)
+    fail(ErrorCode::Degenerate, "outline: " + std::to_string(flagged) + " of the " + std::to_string(n) + " points look like border points; the neighbourhood of " + std::to_string(neighbours) +
+                                    " points does not span the surface (scan lines far apart?): try a larger DBS_OPT_OUTLINE_NEIGHBOURS");
 
   const BoundaryGraph graph = boundary_graph(points, outline.boundary, nb.spacing, threads);
   std::vector<std::uint32_t> local(graph.ids.size(), 0);
@@ -419,9 +460,20 @@ Outline find_outline(const std::vector<Vec3>& points, std::size_t neighbours, in
     loops.push_back(smooth_loop(points, path, nb, normal, index));
   }
   if (loops.empty()) fail(ErrorCode::Degenerate, "outline: the boundary points of the cloud form no closed loop (a closed surface, or one whose border is sampled too thinly, has none)");
+  // The outer loop encloses the largest area in the cloud's principal plane (a hole may be
+  // longer than the outline: a gear cut out of a plate); every other loop must lie inside it.
+  const PlaneFrame frame = principal_plane(points);
+  std::vector<std::vector<Vec2>> flat(loops.size());
   std::size_t outer = 0;
-  for (std::size_t k = 1; k < loops.size(); ++k)
-    if (loops[k].perimeter > loops[outer].perimeter) outer = k;
+  double largest = -1.0;
+  for (std::size_t k = 0; k < loops.size(); ++k) {
+    for (const Vec3& p : loops[k].points) flat[k].push_back(frame.project(p));
+    const double area = std::abs(signed_area(flat[k]));
+    if (area > largest) {
+      largest = area;
+      outer = k;
+    }
+  }
   for (std::size_t k = 0; k < loops.size(); ++k) {
     if (k == outer) {
       outline.outer = std::move(loops[k]);
@@ -433,9 +485,76 @@ Outline find_outline(const std::vector<Vec3>& points, std::size_t neighbours, in
     for (std::size_t i : loops[k].sources) spacings.push_back(nb.spacing[i]);
     std::nth_element(spacings.begin(), spacings.begin() + static_cast<std::ptrdiff_t>(spacings.size() / 2), spacings.end());
     const double spacing = spacings[spacings.size() / 2], step = loops[k].perimeter / static_cast<double>(loops[k].points.size());
-    if (loops[k].perimeter >= kMinHoleSpacings * spacing && step <= kMaxHoleStep * spacing) outline.holes.push_back(std::move(loops[k]));
+    if (loops[k].perimeter < kMinHoleSpacings * spacing || step > kMaxHoleStep * spacing) continue;
+    Vec2 centre = Vec2::Zero();
+    for (const Vec2& q : flat[k]) centre += q;
+    centre /= static_cast<double>(flat[k].size());
+    if (!inside(flat[outer], centre))
+      fail(ErrorCode::Degenerate, "outline: the cloud has separate pieces (an outline loop of " + std::to_string(loops[k].points.size()) + " points lies outside the largest one); parameterize each piece on its own");
+    outline.holes.push_back(std::move(loops[k]));
   }
   return outline;
+}
+
+}  // namespace
+
+Outline find_outline(const std::vector<Vec3>& points, std::size_t neighbours, int threads) {
+  const std::size_t n = points.size();
+  if (neighbours < 6) fail(ErrorCode::InvalidArgument, "outline: " + std::to_string(neighbours) + " neighbours; at least 6 are needed");
+  for (std::size_t i = 0; i < n; ++i)
+    if (!is_finite(points[i])) fail(ErrorCode::NonFinite, "outline: point " + std::to_string(i) + " has a non-finite coordinate");
+  // Coincident points (a scan merged from overlapping passes) would fill the nearest points
+  // with copies: the outline is found on the distinct points, each standing for its copies.
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  auto less = [&](std::size_t a, std::size_t b) {
+    const Vec3 &p = points[a], &q = points[b];
+    if (p.x() != q.x()) return p.x() < q.x();
+    if (p.y() != q.y()) return p.y() < q.y();
+    if (p.z() != q.z()) return p.z() < q.z();
+    return a < b;
+  };
+  std::sort(order.begin(), order.end(), less);
+  std::vector<std::size_t> copy_of(n), first;  // distinct point of each point; lowest index of each distinct point
+  std::vector<Vec3> distinct;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = order[k];
+    if (k == 0 || points[i] != points[order[k - 1]]) {
+      distinct.push_back(points[i]);
+      first.push_back(i);
+    }
+    copy_of[i] = distinct.size() - 1;
+  }
+  // The distinct points in the order of their lowest index, so that ties resolve as on the cloud.
+  std::vector<std::size_t> by_index(distinct.size());
+  for (std::size_t d = 0; d < distinct.size(); ++d) by_index[d] = d;
+  std::sort(by_index.begin(), by_index.end(), [&](std::size_t a, std::size_t b) { return first[a] < first[b]; });
+  std::vector<std::size_t> rank(distinct.size());
+  std::vector<Vec3> cloud(distinct.size());
+  for (std::size_t r = 0; r < by_index.size(); ++r) {
+    rank[by_index[r]] = r;
+    cloud[r] = distinct[by_index[r]];
+  }
+  if (cloud.size() < neighbours + 1)
+    fail(ErrorCode::InvalidArgument, "outline: the cloud has " + std::to_string(cloud.size()) + " distinct points; at least " + std::to_string(neighbours + 1) + " are needed");
+  Outline found = outline_of_distinct(cloud, neighbours, resolve_threads(threads));
+  if (cloud.size() == n) return found;
+  // Back to the cloud's own points: a copy shares its point's verdict and spacing.
+  Outline out;
+  out.boundary.resize(n);
+  out.spacing.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    out.boundary[i] = found.boundary[rank[copy_of[i]]];
+    out.spacing[i] = found.spacing[rank[copy_of[i]]];
+  }
+  auto remap = [&](OutlineLoop& loop) {
+    for (std::size_t& s : loop.sources) s = first[by_index[s]];
+  };
+  out.outer = std::move(found.outer);
+  remap(out.outer);
+  out.holes = std::move(found.holes);
+  for (OutlineLoop& hole : out.holes) remap(hole);
+  return out;
 }
 
 }  // namespace dbs

@@ -44,13 +44,17 @@ struct OutlineLoop {
 struct Outline {
   std::vector<char> boundary;        ///< per cloud point: 1 for a boundary point
   std::vector<double> spacing;       ///< per cloud point: its local spacing
-  OutlineLoop outer;                 ///< empty when no loop was found
-  std::vector<OutlineLoop> holes;    ///< in increasing order of their first source index
+  OutlineLoop outer;                 ///< the loop enclosing the largest area in the cloud's principal plane
+  std::vector<OutlineLoop> holes;    ///< the others inside it, in the order of the lowest point index of their boundary points
 };
 
-/// The outline of `points` with neighbourhoods of `neighbours` nearest points (at least 6).
-/// Throws Error: InvalidArgument (fewer than neighbours + 1 points, neighbours < 6),
-/// NonFinite, Degenerate (no closed loop: the cloud has no outline, e.g. a closed surface).
+/// The outline of `points` with neighbourhoods of `neighbours` nearest points (at least 6),
+/// found on the distinct points (copies share their point's verdict; sources name the lowest
+/// index of a copy). threads as Options::threads (0 = all cores); the result does not depend
+/// on it. Throws Error: InvalidArgument (fewer than neighbours + 1 distinct points,
+/// neighbours < 6), NonFinite, OutOfRange (more than 2^32 points), Degenerate (no closed loop:
+/// the cloud has no outline, e.g. a closed surface; most points look like border points;
+/// separate pieces, a loop outside the outer one).
 Outline find_outline(const std::vector<Vec3>& points, std::size_t neighbours, int threads);
 
 }  // namespace dbs

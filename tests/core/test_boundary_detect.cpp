@@ -344,6 +344,54 @@ void corners_given_as_points(void**) {
   refused({c.corners[0], c.corners[1], c.corners[2], Vec3(0.0, NAN, 0.0)}, dbs::ErrorCode::NonFinite, "corner 3");
 }
 
+void copies_a_long_hole_and_separate_pieces(void**) {
+  // Every point three times (a scan merged from overlapping passes): the boundary of the
+  // cloud without copies, its corners at the first copies.
+  const Case panel_case = cases()[1];
+  std::vector<Vec3> tripled = panel_case.points;
+  for (int copy = 0; copy < 2; ++copy) tripled.insert(tripled.end(), panel_case.points.begin(), panel_case.points.end());
+  const dbs::DetectedBoundary once = dbs::detect_boundary(panel_case.points, kNeighbours, 2);
+  const dbs::DetectedBoundary thrice = dbs::detect_boundary(tripled, kNeighbours, 2);
+  assert_true(once.corner_points == thrice.corner_points);
+  for (int side = 0; side < 4; ++side)
+    assert_true(once.boundary.side(static_cast<dbs::Side>(side)).points() == thrice.boundary.side(static_cast<dbs::Side>(side)).points());
+  // A gear cut out of a plate: the hole's outline (24 teeth) is longer than the plate's, the
+  // plate is still the outer loop.
+  auto gear = [](double a, double b) {
+    const double x = a - 0.5, y = b - 0.5, r = std::hypot(x, y), t = std::atan2(y, x);
+    return r > (std::fmod(t * 24.0 / (2 * kPi) + 24.0, 1.0) < 0.5 ? 0.25 : 0.4);
+  };
+  const Case geared = sampled("plate with a gear cut out", [](double a, double b) { return Vec3(a, b, 0.0); }, 11, gear, 0.0, 40000);
+  const dbs::Outline outline = dbs::find_outline(geared.points, kNeighbours, 2);
+  std::printf("gear: outer perimeter %.3f, %zu hole(s), the first %.3f long\n", outline.outer.perimeter, outline.holes.size(), outline.holes.empty() ? 0.0 : outline.holes[0].perimeter);
+  assert_true(std::abs(outline.outer.perimeter - 4.0) < 0.4);
+  assert_int_equal(outline.holes.size(), 1);
+  assert_true(outline.holes[0].perimeter > outline.outer.perimeter);
+  // Two plates apart: separate pieces are refused, not one taken for the other's hole.
+  std::vector<Vec3> two = cases()[0].points;
+  for (const Vec3& p : cases()[0].points) two.push_back(p + Vec3(3.0, 0.0, 0.0));
+  try {
+    dbs::detect_boundary(two, kNeighbours, 2);
+    fail();
+  } catch (const dbs::Error& e) {
+    std::printf("refused: %s\n", e.what());
+    assert_int_equal(e.code(), dbs::ErrorCode::Degenerate);
+    assert_non_null(std::strstr(e.what(), "separate pieces"));
+  }
+  // Scan lines 12 point steps apart: most points look like border points.
+  std::vector<Vec3> lines;
+  for (int row = 0; row < 20; ++row)
+    for (int k = 0; k < 500; ++k) lines.push_back(Vec3(k * 0.002, row * 0.024, 0.0));
+  try {
+    dbs::detect_boundary(lines, kNeighbours, 2);
+    fail();
+  } catch (const dbs::Error& e) {
+    std::printf("refused: %s\n", e.what());
+    assert_int_equal(e.code(), dbs::ErrorCode::Degenerate);
+    assert_non_null(std::strstr(e.what(), "larger DBS_OPT_OUTLINE_NEIGHBOURS"));
+  }
+}
+
 void clouds_without_an_outline_are_refused(void**) {
   // A closed sphere has no boundary points; a handful of points too few for a neighbourhood.
   std::vector<Vec3> sphere;
@@ -361,7 +409,7 @@ void clouds_without_an_outline_are_refused(void**) {
     }
   };
   refused(sphere, kNeighbours, dbs::ErrorCode::Degenerate, "closed");
-  refused(std::vector<Vec3>(sphere.begin(), sphere.begin() + 10), kNeighbours, dbs::ErrorCode::InvalidArgument, "at least 25");
+  refused(std::vector<Vec3>(sphere.begin(), sphere.begin() + 10), kNeighbours, dbs::ErrorCode::InvalidArgument, "10 distinct points; at least 25");
   refused(sphere, 3, dbs::ErrorCode::InvalidArgument, "at least 6");
   std::vector<Vec3> bad = cases()[0].points;
   bad[17].y() = INFINITY;
@@ -377,6 +425,7 @@ int main(void) {
       cmocka_unit_test(parameters_agree_with_the_exact_boundary),
       cmocka_unit_test(same_choice_scaled_and_moved),
       cmocka_unit_test(corners_given_as_points),
+      cmocka_unit_test(copies_a_long_hole_and_separate_pieces),
       cmocka_unit_test(clouds_without_an_outline_are_refused),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
