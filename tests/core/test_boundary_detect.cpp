@@ -368,10 +368,12 @@ void copies_a_long_hole_and_separate_pieces(void**) {
   assert_int_equal(outline.holes.size(), 1);
   assert_true(outline.holes[0].perimeter > outline.outer.perimeter);
   // Two plates apart: separate pieces are refused, not one taken for the other's hole.
-  std::vector<Vec3> two = cases()[0].points;
-  for (const Vec3& p : cases()[0].points) two.push_back(p + Vec3(3.0, 0.0, 0.0));
+  const std::vector<Vec3> one = cases()[0].points;
+  std::vector<Vec3> two = one;
+  for (const Vec3& p : one) two.push_back(p + Vec3(3.0, 0.0, 0.0));
   try {
-    dbs::detect_boundary(two, kNeighbours, 2);
+    const dbs::DetectedBoundary wrong = dbs::detect_boundary(two, kNeighbours, 2);
+    std::printf("not refused: %zu holes, corner (0,0) at (%g, %g)\n", wrong.holes.size(), wrong.boundary.corner(0, 0).x(), wrong.boundary.corner(0, 0).y());
     fail();
   } catch (const dbs::Error& e) {
     std::printf("refused: %s\n", e.what());
