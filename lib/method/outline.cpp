@@ -392,22 +392,6 @@ OutlineLoop smooth_loop(const std::vector<Vec3>& points, const std::vector<std::
 }
 
 
-/// The plane of a cloud's two principal axes.
-struct PlaneFrame {
-  Vec3 origin, e1, e2;
-  Vec2 project(const Vec3& p) const { return {(p - origin).dot(e1), (p - origin).dot(e2)}; }
-};
-
-PlaneFrame principal_plane(const std::vector<Vec3>& points) {
-  Vec3 mean = Vec3::Zero();
-  for (const Vec3& p : points) mean += p;
-  mean /= static_cast<double>(points.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (const Vec3& p : points) cov += (p - mean) * (p - mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(cov);
-  return {mean, eigen.eigenvectors().col(2), eigen.eigenvectors().col(1)};
-}
-
 double signed_area(const std::vector<Vec2>& polygon) {
   double twice = 0.0;
   for (std::size_t i = 0; i < polygon.size(); ++i) {
@@ -497,6 +481,16 @@ Outline outline_of_distinct(const std::vector<Vec3>& points, std::size_t neighbo
 }
 
 }  // namespace
+
+PlaneFrame principal_plane(const std::vector<Vec3>& points) {
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const Vec3& p : points) cov += (p - mean) * (p - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(cov);
+  return {mean, eigen.eigenvectors().col(2), eigen.eigenvectors().col(1)};
+}
 
 Outline find_outline(const std::vector<Vec3>& points, std::size_t neighbours, int threads) {
   const std::size_t n = points.size();

@@ -48,6 +48,14 @@ struct Outline {
   std::vector<OutlineLoop> holes;    ///< the others inside it, in the order of the lowest point index of their boundary points
 };
 
+/// The plane of a cloud's two principal axes (PCA), where outlines are compared and
+/// rectangles fitted.
+struct PlaneFrame {
+  Vec3 origin, e1, e2;
+  Vec2 project(const Vec3& p) const { return {(p - origin).dot(e1), (p - origin).dot(e2)}; }
+};
+PlaneFrame principal_plane(const std::vector<Vec3>& points);
+
 /// The outline of `points` with neighbourhoods of `neighbours` nearest points (at least 6),
 /// found on the distinct points (copies share their point's verdict; sources name the lowest
 /// index of a copy). threads as Options::threads (0 = all cores); the result does not depend

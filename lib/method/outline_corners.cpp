@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include "error.hpp"
@@ -63,15 +62,9 @@ std::vector<double> turning(const OutlineLoop& loop) {
 /// The loop points nearest to the corners of the minimum-area rectangle around the loop in
 /// the plane of its two principal axes.
 std::array<std::size_t, 4> rectangle_corners(const std::vector<Vec3>& p) {
-  Vec3 mean = Vec3::Zero();
-  for (const Vec3& x : p) mean += x;
-  mean /= static_cast<double>(p.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (const Vec3& x : p) cov += (x - mean) * (x - mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(cov);
-  const Vec3 e1 = eigen.eigenvectors().col(2), e2 = eigen.eigenvectors().col(1);
+  const PlaneFrame frame = principal_plane(p);
   std::vector<Vec2> q;
-  for (const Vec3& x : p) q.emplace_back((x - mean).dot(e1), (x - mean).dot(e2));
+  for (const Vec3& x : p) q.push_back(frame.project(x));
   // Convex hull (monotone chain), then the rectangle of each hull edge's direction.
   std::vector<std::size_t> order(q.size());
   for (std::size_t i = 0; i < q.size(); ++i) order[i] = i;
