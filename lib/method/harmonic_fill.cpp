@@ -19,6 +19,7 @@ double stretch(const Result& result, const std::vector<Vec3>& points, std::size_
     d3 += (points[m] - points[p]).norm();
     d2 += std::hypot(result.u[m] - result.u[p], result.v[m] - result.v[p]);
   }
+  if (!(d3 > 0.0)) return 1.0;  // all its nearest points coincide with it: no stretch to tell
   return d3 / std::max(d2, 1e-12 * d3);
 }
 
@@ -109,7 +110,7 @@ std::size_t balance_stretch(Result& result, const std::vector<Vec3>& points, con
   std::vector<std::vector<std::size_t>> around(involved.size());
   parallel_for(involved.size(), threads, [&](std::size_t k) {
     std::vector<double> d2;
-    index.knn(points[involved[k]], rows.neighbours.front().size() + 1, around[k], d2);
+    index.knn(points[involved[k]], kStretchNeighbours + 1, around[k], d2);
   });
   std::vector<double> sigma(points.size(), 1.0);
   auto measure_stretch = [&] {

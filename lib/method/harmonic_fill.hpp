@@ -23,6 +23,7 @@
 
 namespace dbs {
 
+constexpr std::size_t kStretchNeighbours = 12;  ///< a point's stretch is measured over this many nearest points
 constexpr int kFillSweeps = 200;             ///< Gauss-Seidel sweeps of a fill, in point order
 constexpr int kStretchRounds = 3;            ///< reweightings of a crushed region
 constexpr double kCrushedStretch = 10.0;     ///< crushed: stretch above this x the median of the fill's fixed points
