@@ -59,9 +59,10 @@ double stat_value(const dbs::Result& r, int32_t stat) {
     case DBS_STAT_COVERAGE: return r.coverage;
     case DBS_STAT_CLAMPED_POINTS: return static_cast<double>(r.clamped_points);
     case DBS_STAT_FAR_POINTS: return static_cast<double>(r.far_points);
+    case DBS_STAT_CROPPED_POINTS: return static_cast<double>(r.cropped_points);
     default: break;
   }
-  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_FAR_POINTS + 1) + ")");
+  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_CROPPED_POINTS + 1) + ")");
 }
 
 }  // namespace
@@ -119,6 +120,19 @@ int dbs_result_repaired(const dbs_result* result, int32_t* out, size_t capacity)
     require_non_null(out, "out");
     if (result->result.repaired.size() != result->result.u.size()) fail_status(DBS_ERR_INTERNAL, "the result's repair flags do not match its points");
     copy_values(result->result.repaired, out, capacity, "out");
+  });
+}
+
+static_assert(DBS_POINT_REPAIRED == dbs::kPointRepaired && DBS_POINT_FAR == dbs::kPointFar && DBS_POINT_CLAMPED == dbs::kPointClamped && DBS_POINT_CROPPED == dbs::kPointCropped,
+              "DBS_POINT_* and dbs::PointFlag must agree");
+
+int dbs_result_point_flags(const dbs_result* result, int32_t* out, size_t capacity) {
+  return guarded(__func__, [&] {
+    require_non_null(result, "result");
+    require_non_null(out, "out");
+    require_capacity("out", capacity, result->result.u.size(), "values");
+    const std::vector<std::int32_t> flags = result->result.point_flags();
+    std::copy(flags.begin(), flags.end(), out);
   });
 }
 

@@ -34,7 +34,8 @@ const dbs::MeasureSummary& summary_of(const dbs::DistortionSummary& s, int32_t m
 double value_of(const dbs::TriangleDistortion& t, int32_t measure) {
   if (measure == DBS_MEASURE_FOLDED) return t.folded ? 1.0 : 0.0;
   if (measure == DBS_MEASURE_DEGENERATE) return t.degenerate ? 1.0 : 0.0;
-  if (t.degenerate) return std::numeric_limits<double>::quiet_NaN();
+  if (measure == DBS_MEASURE_CROPPED) return t.cropped ? 1.0 : 0.0;
+  if (t.degenerate || t.cropped) return std::numeric_limits<double>::quiet_NaN();
   switch (measure) {
     case DBS_MEASURE_CONFORMAL: return t.conformal;
     case DBS_MEASURE_AREA: return t.area;
@@ -81,7 +82,7 @@ int dbs_distortion_stat(const dbs_distortion* distortion, int32_t stat, double* 
   return guarded(__func__, [&] {
     require_non_null(distortion, "distortion");
     require_non_null(out, "out");
-    require_index("stat", stat, DBS_DISTORTION_MESH_STRETCH_L2 + 1);
+    require_index("stat", stat, DBS_DISTORTION_CROPPED + 1);
     const dbs::DistortionSummary& s = distortion->distortion.summary;
     switch (stat) {
       case DBS_DISTORTION_TRIANGLES: *out = static_cast<double>(s.triangles); break;
@@ -89,6 +90,7 @@ int dbs_distortion_stat(const dbs_distortion* distortion, int32_t stat, double* 
       case DBS_DISTORTION_FOLDED: *out = static_cast<double>(s.folded); break;
       case DBS_DISTORTION_SCALE_U: *out = s.scale_u; break;
       case DBS_DISTORTION_SCALE_V: *out = s.scale_v; break;
+      case DBS_DISTORTION_CROPPED: *out = static_cast<double>(s.cropped); break;
       default: *out = s.mesh_stretch_l2; break;
     }
   });
@@ -110,7 +112,7 @@ int dbs_distortion_values(const dbs_distortion* distortion, int32_t measure, dou
   return guarded(__func__, [&] {
     require_non_null(distortion, "distortion");
     require_non_null(out, "out");
-    require_measure(measure, DBS_MEASURE_DEGENERATE);
+    require_measure(measure, DBS_MEASURE_CROPPED);
     const std::vector<dbs::TriangleDistortion>& triangles = distortion->distortion.triangles;
     require_capacity("out", capacity, triangles.size(), "values");
     for (size_t t = 0; t < triangles.size(); ++t) out[t] = value_of(triangles[t], measure);

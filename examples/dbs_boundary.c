@@ -28,6 +28,8 @@ static const char *const usage_text =
     "                             the corners (0,0), (1,0), (1,1), (0,1): the outline is cut\n"
     "                             at its points nearest to them [where it turns most]\n"
     "  --outline-neighbours N     nearest points a point's angular gap is judged on [24]\n"
+    "  --report DIR               also write boundary.png (the points, the four sides in\n"
+    "                             colours, the corners, the holes) and boundary.json into DIR\n"
     "  --threads N                worker threads, 0 = all hardware threads [0]; with\n"
     "                             --corners all of them\n"
     "  -q, --quiet                no summary\n"
@@ -84,6 +86,7 @@ struct command_line {
   const char *boundary_path;
   const char *corners_text;
   int neighbours; /* -1: the default */
+  const char *report_dir;
   int threads;
   int quiet;
 };
@@ -124,6 +127,8 @@ static void parse_command_line(int argc, char **argv, struct command_line *cmd) 
       cmd->corners_text = option_value(argc, argv, &i, arg, n);
     } else if (flag_is(arg, "--outline-neighbours", &n)) {
       cmd->neighbours = parse_int("--outline-neighbours", option_value(argc, argv, &i, arg, n));
+    } else if (flag_is(arg, "--report", &n)) {
+      cmd->report_dir = option_value(argc, argv, &i, arg, n);
     } else if (flag_is(arg, "--threads", &n)) {
       cmd->threads = parse_int("--threads", option_value(argc, argv, &i, arg, n));
     } else if (arg[0] == '-' && arg[1] != '\0') {
@@ -135,6 +140,7 @@ static void parse_command_line(int argc, char **argv, struct command_line *cmd) 
     }
   }
   if (cmd->cloud_path == NULL) usage_error("missing CLOUD (usage: dbs-boundary CLOUD -o BOUNDARY [options])");
+  if (cmd->report_dir != NULL && cmd->report_dir[0] == '\0') usage_error("--report needs a directory");
   if (cmd->boundary_path == NULL || cmd->boundary_path[0] == '\0') usage_error("missing -o BOUNDARY (the boundary file to write)");
   if (cmd->corners_text != NULL && cmd->neighbours != -1) usage_error("--outline-neighbours applies to the detection; --corners uses the default neighbourhood");
 }
@@ -200,6 +206,13 @@ int main(int argc, char **argv) {
     goto done;
   }
   if (!cmd.quiet) print_summary(boundary, points, cmd.boundary_path);
+  if (cmd.report_dir != NULL) {
+    if ((status = dbs_boundary_report_write(boundary, cloud, cmd.report_dir)) != DBS_OK) {
+      library_error(status, "writing the report");
+      goto done;
+    }
+    if (!cmd.quiet) printf("report          %s\n", cmd.report_dir);
+  }
   exit_code = EXIT_SUCCESS;
 
 done:

@@ -50,6 +50,9 @@ static const char *const usage_text =
     "  --auto-boundary            no BOUNDARY: the cloud's outline cut at its four corners\n"
     "                             (dbs_boundary_detect)\n"
     "  --outline-neighbours N     neighbourhood of the outline with --auto-boundary [24]\n"
+    "  --crop                     points outside the boundary get no (u,v) and no row in RESULT\n"
+    "                             instead of being clamped onto the domain's edge\n"
+    "  --strict                   a gross mismatch of cloud and boundary is an error, not a warning\n"
     "  --corner-tolerance F       corners of BOUNDARY may miss by F times its size; they are\n"
     "                             snapped together [1e-6]\n"
     "  --report DIR               also write a validation report into DIR: mesh files,\n"
@@ -124,7 +127,7 @@ static int32_t parse_int(const char *option, const char *text) {
 
 /* ---- command line ----------------------------------------------------------------- */
 
-enum value_kind { VALUE_NONE, VALUE_INT, VALUE_DOUBLE, VALUE_SOLVER, VALUE_LOSS };
+enum value_kind { VALUE_NONE, VALUE_INT, VALUE_DOUBLE, VALUE_SOLVER, VALUE_LOSS, VALUE_FLAG /* no value: sets the int option to 1 */ };
 
 /* One library option as given on the command line. */
 struct option_value {
@@ -155,6 +158,8 @@ static struct option_value library_options[] = {
     {"--ceres-iterations", DBS_OPT_CERES_MAX_ITERATIONS, VALUE_INT, NULL, 0, 0.0, 0},
     {"--ceres-tolerance", DBS_OPT_CERES_FUNCTION_TOLERANCE, VALUE_DOUBLE, NULL, 0, 0.0, 0},
     {"--outline-neighbours", DBS_OPT_OUTLINE_NEIGHBOURS, VALUE_INT, NULL, 0, 0.0, 0},
+    {"--crop", DBS_OPT_CROP, VALUE_FLAG, NULL, 0, 0.0, 0},
+    {"--strict", DBS_OPT_STRICT, VALUE_FLAG, NULL, 0, 0.0, 0},
 };
 #define LIBRARY_OPTION_COUNT (sizeof library_options / sizeof library_options[0])
 
@@ -207,6 +212,9 @@ static void store_option_value(struct option_value *option, const char *text) {
       } else {
         usage_error("--loss: '%s' is not a loss (none, huber, cauchy or soft_l1)", text);
       }
+      break;
+    case VALUE_FLAG:
+      option->int_value = 1;
       break;
     case VALUE_NONE:
       break;
@@ -262,7 +270,10 @@ static void parse_command_line(int argc, char **argv, struct command_line *cmd) 
         cmd->corner_tolerance = parse_double("--corner-tolerance", equals != NULL ? equals + 1 : argv[++i]);
         if (!(cmd->corner_tolerance >= 0.0)) usage_error("--corner-tolerance: %g is not a fraction >= 0", cmd->corner_tolerance);
       } else if ((option = find_library_option(arg, flag_length)) != NULL) {
-        if (equals != NULL) {
+        if (option->kind == VALUE_FLAG) {
+          if (equals != NULL) usage_error("%.*s takes no value", (int)flag_length, arg);
+          store_option_value(option, "");
+        } else if (equals != NULL) {
           store_option_value(option, equals + 1);
         } else if (i + 1 < argc) {
           store_option_value(option, argv[++i]);
@@ -446,6 +457,8 @@ static void print_summary(const dbs_result *result, const char *result_path, dou
   if (stat_of(result, DBS_STAT_REPAIRED_POINTS) > 0.0) printf("repaired        %.0f points\n", stat_of(result, DBS_STAT_REPAIRED_POINTS));
   printf("inputs          boundary %.3g spacings from the cloud, cloud/boundary size %.3g, domain covered %.1f %%, %.0f points clamped\n",
          stat_of(result, DBS_STAT_BOUNDARY_GAP), stat_of(result, DBS_STAT_SCALE_RATIO), 100.0 * stat_of(result, DBS_STAT_COVERAGE), stat_of(result, DBS_STAT_CLAMPED_POINTS));
+  if (stat_of(result, DBS_STAT_CROPPED_POINTS) > 0.0)
+    printf("cropped         %.0f points outside the boundary: no (u,v), not in the result file\n", stat_of(result, DBS_STAT_CROPPED_POINTS));
   if (corner_snap > 0.0) printf("corners         snapped together, the farthest end moved %.6g\n", corner_snap);
   printf("time            %.3f s\n", stat_of(result, DBS_STAT_SECONDS));
   printf("result          %s\n", result_path);

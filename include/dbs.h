@@ -318,6 +318,8 @@ typedef struct dbs_options dbs_options;
 #define DBS_OPT_LOSS_SCALE 13       /* double; 0 = derived; >= 0. \since 0.4. Scale a of the loss in cloud units (distances below it count fully); 0: 3 sigma of the cloud's estimated noise (DBS_STAT_NOISE), at least the spacing h (DBS_STAT_LENGTH_SCALE), so a scaled cloud gets a scaled loss. The one used is DBS_STAT_LOSS_SCALE. A scale outside [1e-6, 1e6] times h makes dbs_parameterize fail with DBS_ERR_OUT_OF_RANGE. */
 #define DBS_OPT_CERES_MAX_ITERATIONS 14      /* int; 25; [1, 1000]. \since 0.4. Ceres iterations per solve at most (a curve takes one to four solves, twice that with a loss). */
 #define DBS_OPT_OUTLINE_NEIGHBOURS 16           /* int; 24; [6, 256]. \since 0.4. Nearest points of a neighbourhood in dbs_boundary_detect (dbs_boundary_from_corners uses the default): a point is on the cloud's outline when they leave an angular gap above 120 degrees around it (with the points that count it among theirs). Larger: fewer false outline points inside a sparse or noisy cloud, a coarser outline. */
+#define DBS_OPT_CROP 17                 /* int; 0; [0, 1]. \since 0.4. 1: points outside the boundary (those DBS_STAT_CLAMPED_POINTS counts, judged before the repair) and points far outside the cloud (DBS_STAT_FAR_POINTS) are cropped instead of clamped onto the domain's edge: u, v and distance NaN, patch and level -1, DBS_POINT_CROPPED in dbs_result_point_flags, counted by DBS_STAT_CROPPED_POINTS; the fold measure, the repair, the distance statistics, the validation (dbs_mesh_*, dbs_distortion_create, dbs_distances_create, dbs_report_write) and the result and mesh files leave them out. They still took part in evolving the surfaces. No clamped-points warning then. */
+#define DBS_OPT_STRICT 18               /* int; 0; [0, 1]. \since 0.4. 1: a gross mismatch of cloud and boundary fails dbs_parameterize with DBS_ERR_DEGENERATE and the warning's message (with its numbers), instead of a warning: the scale ratio (DBS_STAT_SCALE_RATIO) or the boundary's gap (DBS_STAT_BOUNDARY_GAP) before the run, the coverage (DBS_STAT_COVERAGE) or the clamped points (DBS_STAT_CLAMPED_POINTS; not with DBS_OPT_CROP) once every point has its foot. */
 #define DBS_OPT_CERES_FUNCTION_TOLERANCE 15  /* double; 1e-6; [1e-16, 1]. \since 0.4. Ceres stops when an iteration changes the cost by less than this fraction. */
 
 /* Solvers for DBS_OPT_SOLVER (pinned; \since 0.1). */
@@ -502,6 +504,15 @@ DBS_API int dbs_result_point_levels(const dbs_result *result, int32_t *out, size
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.3 */
 DBS_API int dbs_result_repaired(const dbs_result *result, int32_t *out, size_t capacity);
 
+/* Per-point flags of dbs_result_point_flags, bits that may combine (pinned; \since 0.4). */
+#define DBS_POINT_REPAIRED 1 /* the last-resort repair gave it its (u,v) (as dbs_result_repaired) */
+#define DBS_POINT_FAR 2      /* far outside the cloud's body (DBS_STAT_FAR_POINTS): took the (u,v) of its nearest point of the body, or was cropped */
+#define DBS_POINT_CLAMPED 4  /* outside the boundary (DBS_STAT_CLAMPED_POINTS): its foot, before the repair, lay on the domain's edge more than a point spacing from the surface */
+#define DBS_POINT_CROPPED 8  /* cropped (DBS_OPT_CROP): u, v and distance NaN, patch and level -1 */
+/** The DBS_POINT_* bits of each point, in input order, into `out`, which holds `capacity` values (at least the point count).
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.4 */
+DBS_API int dbs_result_point_flags(const dbs_result *result, int32_t *out, size_t capacity);
+
 /** Point (and, if out_normal is not NULL, unit normal) of the base surface at (u,v) in [0,1]^2;
  *  3 doubles each. A (u,v) on a seam between leaves is evaluated on the leaf with the
  *  larger u and v (the seams are C0, so the point agrees).
@@ -540,10 +551,11 @@ DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, do
 #define DBS_STAT_CERES_ITERATIONS 26      /* \since 0.4: Ceres iterations over all refined grid sections of all patches (0 with the linear solver), a count */
 #define DBS_STAT_LOSS_SCALE 27            /* \since 0.4: the scale of the robust loss used (DBS_OPT_LOSS_SCALE, or the derived one), cloud units; 0 without a loss or with the linear solver */
 #define DBS_STAT_COLLAPSED_POINTS 28      /* \since 0.4: of the UNDECIDED points, those whose neighbourhood is squeezed in (u,v) (most neighbours share its (u,v), the local map to (u,v) has rank about one, or its determinant is below 1e-3 of the median): where a surface never reached the cloud, points pile up without turning over, which the FOLDED count cannot see; a count */
-#define DBS_STAT_BOUNDARY_GAP 29          /* \since 0.4: the boundary's distance to the cloud: of 256 points spread along its sides, 90% lie within this distance of their nearest cloud point, in point spacings (DBS_STAT_LENGTH_SCALE); above 10 a warning (dbs_options_set_warning) asks whether the boundary belongs to this cloud */
+#define DBS_STAT_BOUNDARY_GAP 29          /* \since 0.4: the boundary's distance to the cloud: of 256 points spread along its sides, 90% lie within this distance of their nearest cloud point, in point spacings (DBS_STAT_LENGTH_SCALE), each measured against the local spacing there (so a sparse part of a scan is no gap); about 1 for a boundary on its scan's edges; above 4 a warning (dbs_options_set_warning) asks whether the sides follow the scan's edges (four straight lines between the corners of a curved part run through the air), above 10 whether the boundary belongs to this cloud */
 #define DBS_STAT_SCALE_RATIO 30           /* \since 0.4: the cloud's bounding-box diagonal over the boundary's, a ratio (about 1 when the boundary surrounds its scan; beyond 10 or below 1/10 a warning asks whether they are in the same units) */
 #define DBS_STAT_COVERAGE 31              /* \since 0.4: the share of [0,1]^2 the points' (u,v) cover: cells of a grid with about 16 points per cell (at least 2 x 2, at most 256 x 256) holding a point, in [0,1]; below 0.75 a warning says the cloud covers only part of the boundary */
 #define DBS_STAT_CLAMPED_POINTS 32        /* \since 0.4: points whose (u,v) lies on the domain's edge while they are farther than a point spacing from the surface there (outside the boundary, clamped onto it), a count; beyond 1% of the points (and at least 10) a warning asks whether the scan is larger than its boundary */
+#define DBS_STAT_CROPPED_POINTS 34        /* \since 0.4: points cropped (DBS_OPT_CROP): no (u,v), left out of every statistic, the validation and the files; a count (0 without the option) */
 #define DBS_STAT_FAR_POINTS 33            /* \since 0.4: points far outside the cloud's body (beyond 10 times its extent from the box between its 1% and 99% coordinate quantiles in the boundary's corner frame: a 1e9 or 1e300 glitch next to a scan): left out of the relative target, the spacing, the surfaces, the repair, the fold measure and the distance statistics; each takes the (u,v), patch and level of its nearest point of the body and its finite distance to the surface there; a count, with a warning */
 /** One summary statistic (DBS_STAT_*) of the result, in the unit given beside its id.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (stat). \since 0.1 */
@@ -689,6 +701,7 @@ typedef struct dbs_distortion dbs_distortion;
 #define DBS_MEASURE_SIGMA2 6
 #define DBS_MEASURE_FOLDED 7     /* 1 when folded (orientation against the majority), else 0 */
 #define DBS_MEASURE_DEGENERATE 8 /* 1 when degenerate, else 0 */
+#define DBS_MEASURE_CROPPED 9    /* \since 0.4: 1 when a vertex is a cropped point (DBS_OPT_CROP): NaN for measures 0-6, in no summary and no count but DBS_DISTORTION_CROPPED */
 
 /* Summary statistics of a measure over the non-degenerate triangles (pinned; \since 0.1),
  * in the measure's own unit. */
@@ -704,6 +717,7 @@ typedef struct dbs_distortion dbs_distortion;
 #define DBS_DISTORTION_SCALE_U 3         /* the scaling applied to u (u' = scale * u), cloud units per unit of u */
 #define DBS_DISTORTION_SCALE_V 4         /* the scaling applied to v, cloud units per unit of v */
 #define DBS_DISTORTION_MESH_STRETCH_L2 5 /* Sander's L2 stretch of the mesh (3D-area-weighted RMS); 1 = isometric */
+#define DBS_DISTORTION_CROPPED 6         /* \since 0.4: triangles with a cropped vertex (DBS_OPT_CROP), left out of every other figure, a count */
 
 /** Distortion of the Delaunay mesh. A triangle is folded when the sign of det J times the
  *  sign of its 3D normal against the base surface's normal differs from the majority's, so
@@ -776,6 +790,17 @@ DBS_API int dbs_distances_stat(const dbs_distances *distances, int32_t patch, in
  *  DBS_ERR_UNSUPPORTED (built without the report or the validation), DBS_ERR_NO_MEMORY.
  *  \since 0.1 */
 DBS_API int dbs_report_write(const dbs_result *result, const dbs_cloud *cloud, const dbs_options *options, const char *dir);
+/** The report of a boundary against its cloud, into directory `dir` (created if missing):
+ *  boundary.png (960 x 520: two 480 x 480 views, along the cloud's least principal axis and
+ *  from the side: the points in grey, the sides in colours (bottom red, right green, top blue,
+ *  left orange), the corners labelled (0,0), (1,0), (1,1), (0,1), the holes of a boundary
+ *  found by dbs_boundary_detect or dbs_boundary_from_corners in magenta) and boundary.json
+ *  (the sides' point counts and lengths, the corners, the holes' point counts and lengths;
+ *  docs/FORMATS.md). Existing files are replaced. Needs DBS_FEATURE_REPORT.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (an empty cloud), DBS_ERR_IO
+ *  (cannot create the directory or write a file), DBS_ERR_UNSUPPORTED (built without the
+ *  report), DBS_ERR_NO_MEMORY. \since 0.4 */
+DBS_API int dbs_boundary_report_write(const dbs_boundary *boundary, const dbs_cloud *cloud, const char *dir);
 
 #ifdef __cplusplus
 }

@@ -38,6 +38,8 @@ module dbs
   integer(c_int32_t), parameter :: DBS_OPT_LOSS = 12, DBS_OPT_LOSS_SCALE = 13
   integer(c_int32_t), parameter :: DBS_OPT_CERES_MAX_ITERATIONS = 14, DBS_OPT_CERES_FUNCTION_TOLERANCE = 15
   integer(c_int32_t), parameter :: DBS_OPT_OUTLINE_NEIGHBOURS = 16
+  integer(c_int32_t), parameter :: DBS_OPT_CROP = 17, DBS_OPT_STRICT = 18
+  integer(c_int32_t), parameter :: DBS_POINT_REPAIRED = 1, DBS_POINT_FAR = 2, DBS_POINT_CLAMPED = 4, DBS_POINT_CROPPED = 8
   integer(c_int32_t), parameter :: DBS_SOLVER_LINEAR = 0, DBS_SOLVER_CERES = 1
   integer(c_int32_t), parameter :: DBS_LOSS_NONE = 0, DBS_LOSS_HUBER = 1, DBS_LOSS_CAUCHY = 2, DBS_LOSS_SOFT_L1 = 3
 
@@ -58,7 +60,7 @@ module dbs
   integer(c_int32_t), parameter :: DBS_STAT_COLLAPSED_POINTS = 28
   integer(c_int32_t), parameter :: DBS_STAT_BOUNDARY_GAP = 29, DBS_STAT_SCALE_RATIO = 30
   integer(c_int32_t), parameter :: DBS_STAT_COVERAGE = 31, DBS_STAT_CLAMPED_POINTS = 32
-  integer(c_int32_t), parameter :: DBS_STAT_FAR_POINTS = 33
+  integer(c_int32_t), parameter :: DBS_STAT_FAR_POINTS = 33, DBS_STAT_CROPPED_POINTS = 34
 
   ! ---- validation: meshes, distortion, distances ----------------------------------------
   real(c_double), parameter :: DBS_MESH_SUSPICIOUS_FACTOR = 4.0_c_double
@@ -66,11 +68,11 @@ module dbs
   integer(c_int32_t), parameter :: DBS_MEASURE_CONFORMAL = 0, DBS_MEASURE_AREA = 1, DBS_MEASURE_STRETCH_L2 = 2
   integer(c_int32_t), parameter :: DBS_MEASURE_STRETCH_LINF = 3, DBS_MEASURE_EDGE_DIFFERENCE = 4
   integer(c_int32_t), parameter :: DBS_MEASURE_SIGMA1 = 5, DBS_MEASURE_SIGMA2 = 6
-  integer(c_int32_t), parameter :: DBS_MEASURE_FOLDED = 7, DBS_MEASURE_DEGENERATE = 8
+  integer(c_int32_t), parameter :: DBS_MEASURE_FOLDED = 7, DBS_MEASURE_DEGENERATE = 8, DBS_MEASURE_CROPPED = 9
   integer(c_int32_t), parameter :: DBS_SUMMARY_MIN = 0, DBS_SUMMARY_MEAN = 1, DBS_SUMMARY_P95 = 2, DBS_SUMMARY_MAX = 3
   integer(c_int32_t), parameter :: DBS_DISTORTION_TRIANGLES = 0, DBS_DISTORTION_DEGENERATE = 1
   integer(c_int32_t), parameter :: DBS_DISTORTION_FOLDED = 2, DBS_DISTORTION_SCALE_U = 3
-  integer(c_int32_t), parameter :: DBS_DISTORTION_SCALE_V = 4, DBS_DISTORTION_MESH_STRETCH_L2 = 5
+  integer(c_int32_t), parameter :: DBS_DISTORTION_SCALE_V = 4, DBS_DISTORTION_MESH_STRETCH_L2 = 5, DBS_DISTORTION_CROPPED = 6
   integer(c_int32_t), parameter :: DBS_DISTANCES_COUNT = 0, DBS_DISTANCES_MEAN = 1, DBS_DISTANCES_RMS = 2
   integer(c_int32_t), parameter :: DBS_DISTANCES_MAX = 3, DBS_DISTANCES_P50 = 4, DBS_DISTANCES_P90 = 5
   integer(c_int32_t), parameter :: DBS_DISTANCES_P95 = 6, DBS_DISTANCES_P99 = 7
@@ -376,6 +378,13 @@ module dbs
       integer(c_size_t), value :: capacity
       integer(c_int) :: dbs_result_repaired
     end function
+    function dbs_result_point_flags(result, out, capacity) bind(C, name="dbs_result_point_flags")
+      import :: c_int, c_int32_t, c_size_t, c_ptr
+      type(c_ptr), value :: result
+      integer(c_int32_t), intent(out) :: out(*)
+      integer(c_size_t), value :: capacity
+      integer(c_int) :: dbs_result_point_flags
+    end function
     ! out_normal is optional: left out, the C side receives NULL.
     function dbs_result_evaluate(result, u, v, out_xyz, out_normal) bind(C, name="dbs_result_evaluate")
       import :: c_int, c_double, c_ptr
@@ -629,6 +638,12 @@ module dbs
       type(c_ptr), value :: result, cloud, options
       character(kind=c_char), intent(in) :: dir(*)
       integer(c_int) :: dbs_report_write
+    end function
+    function dbs_boundary_report_write(boundary, cloud, dir) bind(C, name="dbs_boundary_report_write")
+      import :: c_int, c_char, c_ptr
+      type(c_ptr), value :: boundary, cloud
+      character(kind=c_char), intent(in) :: dir(*)
+      integer(c_int) :: dbs_boundary_report_write
     end function
   end interface
 

@@ -66,8 +66,15 @@ OPT_LOSS_SCALE = 13
 OPT_CERES_MAX_ITERATIONS = 14
 OPT_CERES_FUNCTION_TOLERANCE = 15
 OPT_OUTLINE_NEIGHBOURS = 16
+OPT_CROP = 17
+OPT_STRICT = 18
 INT_OPTIONS = (OPT_MAX_LEVEL, OPT_INITIAL_GRID, OPT_MAX_GRID, OPT_SOLVER, OPT_THREADS, OPT_NOISE_FLOOR, OPT_REPAIR,
-               OPT_LOSS, OPT_CERES_MAX_ITERATIONS, OPT_OUTLINE_NEIGHBOURS)
+               OPT_LOSS, OPT_CERES_MAX_ITERATIONS, OPT_OUTLINE_NEIGHBOURS, OPT_CROP, OPT_STRICT)
+
+POINT_REPAIRED = 1
+POINT_FAR = 2
+POINT_CLAMPED = 4
+POINT_CROPPED = 8
 
 FEATURE_DRACO = 0
 FEATURE_VALIDATION = 1
@@ -116,6 +123,7 @@ STAT_SCALE_RATIO = 30
 STAT_COVERAGE = 31
 STAT_CLAMPED_POINTS = 32
 STAT_FAR_POINTS = 33
+STAT_CROPPED_POINTS = 34
 
 MESH_SUSPICIOUS_FACTOR = 4.0
 
@@ -131,6 +139,7 @@ MEASURE_SIGMA1 = 5
 MEASURE_SIGMA2 = 6
 MEASURE_FOLDED = 7
 MEASURE_DEGENERATE = 8
+MEASURE_CROPPED = 9
 
 SUMMARY_MIN = 0
 SUMMARY_MEAN = 1
@@ -143,6 +152,7 @@ DISTORTION_FOLDED = 2
 DISTORTION_SCALE_U = 3
 DISTORTION_SCALE_V = 4
 DISTORTION_MESH_STRETCH_L2 = 5
+DISTORTION_CROPPED = 6
 
 DISTANCES_COUNT = 0
 DISTANCES_MEAN = 1
@@ -215,6 +225,7 @@ PROTOTYPES = {
     "dbs_result_point_patches": (_int, [_ptr, _P(_i32), _size]),
     "dbs_result_point_levels": (_int, [_ptr, _P(_i32), _size]),
     "dbs_result_repaired": (_int, [_ptr, _P(_i32), _size]),
+    "dbs_result_point_flags": (_int, [_ptr, _P(_i32), _size]),
     "dbs_result_evaluate": (_int, [_ptr, _dbl, _dbl, _P(_dbl), _P(_dbl)]),
     "dbs_result_stat": (_int, [_ptr, _i32, _P(_dbl)]),
     "dbs_result_patches": (_int, [_ptr, _P(_ptr)]),
@@ -251,6 +262,7 @@ PROTOTYPES = {
     "dbs_distances_destroy": (None, [_ptr]),
     "dbs_distances_stat": (_int, [_ptr, _i32, _i32, _P(_dbl)]),
     "dbs_report_write": (_int, [_ptr, _ptr, _ptr, _str]),
+    "dbs_boundary_report_write": (_int, [_ptr, _ptr, _str]),
 }
 
 for _name, (_restype, _argtypes) in PROTOTYPES.items():
@@ -642,6 +654,13 @@ class Result(_Handle):
         _check(lib.dbs_result_repaired(self._handle, array, count))
         return list(array)
 
+    def point_flags(self):
+        """The POINT_* bits of each point (repaired, far, clamped, cropped)."""
+        count = len(self)
+        array = (_i32 * count)()
+        _check(lib.dbs_result_point_flags(self._handle, array, count))
+        return list(array)
+
     def evaluate(self, u, v):
         """(point, unit normal) of the base surface at (u, v)."""
         point, normal = (_dbl * 3)(), (_dbl * 3)()
@@ -760,6 +779,11 @@ class Distances(_Handle):
         out = _dbl()
         _check(lib.dbs_distances_stat(self._handle, patch, stat, ctypes.byref(out)))
         return out.value
+
+
+def write_boundary_report(boundary, cloud, directory):
+    """boundary.png and boundary.json of a boundary on its cloud into `directory`."""
+    _check(lib.dbs_boundary_report_write(boundary.handle, cloud.handle, os.fsencode(directory)))
 
 
 def write_report(result, cloud, directory, options=None):

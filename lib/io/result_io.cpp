@@ -16,6 +16,7 @@ void write_csv(const Result& result, const std::string& path) {
   file.write("index,u,v,distance,patch,level\n");
   std::string row;
   for (std::size_t i = 0; i < result.u.size(); ++i) {
+    if (result.is_cropped(i)) continue;  // the index column keeps the rows' input order
     row.clear();
     append_integer(row, static_cast<long long>(i));
     row += ',';
@@ -52,11 +53,12 @@ void append_float(std::string& out, double x) {
 // normals, colors, texture coordinates), not custom properties such as distance and patch.
 void write_ply(const Result& result, const PointCloud& cloud, const std::string& path) {
   OutputFile file(path);
-  file.write("ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(cloud.size()) +
+  file.write("ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(cloud.size() - result.cropped_points) +
              "\nproperty float x\nproperty float y\nproperty float z\nproperty float u\nproperty float v\n"
              "property float distance\nproperty int patch\nend_header\n");
   std::string row;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (result.is_cropped(i)) continue;
     row.clear();
     const Vec3& p = cloud.points()[i];
     for (const double x : {p.x(), p.y(), p.z(), result.u[i], result.v[i], result.distance[i]}) append_float(row, x);
@@ -75,7 +77,18 @@ void save_result(const Result& result, const PointCloud& cloud, const std::strin
   const std::string ext = lowercase_extension(path);
   if (ext == ".csv") return write_csv(result, path);
   if (ext == ".ply") return write_ply(result, cloud, path);
-  if (ext == ".drc") return write_draco_point_cloud(path, cloud.points(), result.u, result.v);
+  if (ext == ".drc") {
+    if (result.cropped_points == 0) return write_draco_point_cloud(path, cloud.points(), result.u, result.v);
+    std::vector<Vec3> points;
+    std::vector<double> u, v;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (result.is_cropped(i)) continue;
+      points.push_back(cloud.points()[i]);
+      u.push_back(result.u[i]);
+      v.push_back(result.v[i]);
+    }
+    return write_draco_point_cloud(path, points, u, v);
+  }
   const std::string what = ext.empty() ? "no extension" : "unknown extension '" + ext + "'";
   fail(ErrorCode::Unsupported, path + ": " + what + " for a result (expected .csv, .ply or .drc)");
 }

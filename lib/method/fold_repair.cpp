@@ -163,7 +163,7 @@ std::vector<int> refit_repaired_leaves(Result& result, const std::vector<Vec3>& 
   std::vector<std::vector<std::size_t>> data(result.patches.size()), members(result.patches.size());
   std::vector<char> touched(result.patches.size(), 0);
   for (std::size_t i = 0; i < points.size(); ++i) {
-    if (i < result.outside_body.size() && result.outside_body[i]) continue;  // placed after the repair
+    if (result.left_out(i)) continue;  // placed after the repair, or cropped
     const std::size_t leaf = static_cast<std::size_t>(result.leaf_at(result.u[i], result.v[i]));
     members[leaf].push_back(i);
     if (!outlier[i]) data[leaf].push_back(i);
@@ -264,7 +264,7 @@ std::vector<char> far_from_surface(const Result& result) {
   const std::size_t n = result.distance.size();
   std::vector<char> far(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    const bool outside = i < result.outside_body.size() && result.outside_body[i];
+    const bool outside = result.left_out(i);
     far[i] = !outside && result.distance[i] > kRepairFactor * result.accuracy && result.distance[i] > kRepairSpacings * result.length_scale;
   }
   return far;
@@ -298,7 +298,7 @@ std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>&
   if (!any) return none;
   const std::vector<std::int8_t> spread = spread_verdicts(points, judged, flags, threads, meter);
   std::vector<char> out(n, 0);
-  for (std::size_t i = 0; i < n; ++i) out[i] = spread[i] != 0 && !(i < result.outside_body.size() && result.outside_body[i]);
+  for (std::size_t i = 0; i < n; ++i) out[i] = spread[i] != 0 && !result.left_out(i);
   return out;
 }
 
@@ -306,8 +306,8 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
   const std::size_t n = points.size();
   result.repaired.assign(n, 0);
   if (!suspect.empty() && suspect.size() != n) fail(ErrorCode::InvalidArgument, "repair_folds: " + std::to_string(suspect.size()) + " suspect flags for " + std::to_string(n) + " points");
-  // Points far outside the cloud's body are neither repaired nor fitted (nor data of a fit).
-  auto outside = [&](std::size_t i) { return i < result.outside_body.size() && result.outside_body[i]; };
+  // Points far outside the cloud's body, and cropped ones, are neither repaired nor fitted (nor data of a fit).
+  auto outside = [&](std::size_t i) { return result.left_out(i); };
   const std::vector<char> is_far = far_from_surface(result);
   auto taken = [&](std::size_t i) { return is_far[i] || (!suspect.empty() && suspect[i]); };
   bool any = false;

@@ -40,6 +40,8 @@ const OptionSpec kSpecs[] = {
     {{"ceres_max_iterations", true, 1.0, 1000.0}, false},
     {{"ceres_function_tolerance", false, 1e-16, 1.0}, false},
     {{"outline_neighbours", true, 6.0, 256.0}, false},
+    {{"crop", true, 0.0, 1.0}, false},
+    {{"strict", true, 0.0, 1.0}, false},
 };
 constexpr int kOptionCount = static_cast<int>(sizeof(kSpecs) / sizeof(kSpecs[0]));
 
@@ -94,6 +96,8 @@ int Options::*integer_member(OptionId id) {
     case OptionId::Repair: return &Options::repair;
     case OptionId::CeresMaxIterations: return &Options::ceres_max_iterations;
     case OptionId::OutlineNeighbours: return &Options::outline_neighbours;
+    case OptionId::Crop: return &Options::crop;
+    case OptionId::Strict: return &Options::strict;
     default: return nullptr;
   }
 }

@@ -47,6 +47,13 @@ struct Options {
   /// Neighbourhood of the outline of dbs_boundary_detect and dbs_boundary_from_corners
   /// (outline.hpp): the nearest points a point's angular gap is judged on.
   int outline_neighbours = 24;
+  /// 1: points outside the boundary (Result::clamped) are cropped: no (u,v), distance, patch
+  /// or level (NaN and -1), left out of the fold measure, the repair, the statistics, the
+  /// validation and the files; 0: they keep their foot clamped onto the domain's edge.
+  int crop = 0;
+  /// 1: a gross mismatch of cloud and boundary (any warning of input_checks.hpp but the
+  /// clamped points when they are cropped) fails the run with ErrorCode::Degenerate.
+  int strict = 0;
   ProgressFn progress;
   LevelFn on_level;
   WarningFn warning;
@@ -74,6 +81,8 @@ enum class OptionId {
   CeresMaxIterations = 14,
   CeresFunctionTolerance = 15,
   OutlineNeighbours = 16,
+  Crop = 17,
+  Strict = 18,
 };
 
 struct OptionInfo {

@@ -101,7 +101,7 @@ class Driver {
     result_.stage_seconds.index = seconds_since(start);
     if (!(result_.length_scale > 0.0)) fail(ErrorCode::Degenerate, "the cloud's points all coincide (length scale 0)");
     check_boundary_against_cloud(*cloud_index_, boundary_, result_.length_scale, checks_);
-    warn(boundary_warnings(checks_));
+    warn_or_fail(boundary_warnings(checks_));
     if (result_.far_points > 0) warn({far_points_warning()});
     // The noise floor: a surface lying exactly on the true surface scores a mean distance of
     // about sigma sqrt(2/pi) against points with Gaussian noise sigma along the normal; a
@@ -122,7 +122,8 @@ class Driver {
     project_across_borders();
     // Judged on the feet, before the repair moves any point.
     check_parameters(result_, checks_);
-    warn(parameter_warnings(checks_, body_.body.size()));
+    warn_or_fail(parameter_warnings(checks_, body_.body.size(), options_.crop != 0));
+    choose_cropped();
     result_.stage_seconds.parameterize += seconds_since(parameterize_start);
     // The fold measure judges the result; with the repair on it judges it first for the
     // repair, and again only when the repair moved a point.
@@ -145,6 +146,7 @@ class Driver {
     }
     place_far_points();
     summarize();
+    crop();
     result_.boundary_gap = checks_.boundary_gap;
     result_.scale_ratio = checks_.scale_ratio;
     result_.coverage = checks_.coverage;
@@ -291,8 +293,8 @@ class Driver {
   /// the input order (a sparser cloud of the same surface: the measure sizes its
   /// neighbourhoods from the spacing), so that it costs a bounded share of a large run.
   FoldMeasure judge_folds(std::vector<std::size_t>& judged) {
-    // Of the body only: `judged` lists them, left empty when they are all the points.
-    const std::vector<std::size_t>& body = body_.body;
+    // Of the kept points only: `judged` lists them, left empty when they are all the points.
+    const std::vector<std::size_t>& body = kept_;
     const std::size_t n = body.size(), count = std::min(n, kFoldJudgedPoints);
     judged.clear();
     if (n == points_.size() && n <= kFoldJudgedPoints) return measure_folds(points_, result_.u, result_.v, result_.noise, threads_, &meter_);
@@ -374,7 +376,7 @@ class Driver {
     if (repair.refitted.empty()) return repair.repaired > 0;
     std::vector<std::vector<double>> distances(result_.patches.size());
     for (std::size_t i = 0; i < points_.size(); ++i)
-      if (result_.patch[i] >= 0) distances[static_cast<std::size_t>(result_.patch[i])].push_back(result_.distance[i]);
+      if (result_.patch[i] >= 0 && !result_.left_out(i)) distances[static_cast<std::size_t>(result_.patch[i])].push_back(result_.distance[i]);
     for (int id : repair.refitted) judge_leaf(result_.patches[static_cast<std::size_t>(id)], distances[static_cast<std::size_t>(id)]);
     return repair.repaired > 0;
   }
@@ -456,13 +458,13 @@ class Driver {
   void summarize() {
     // Over the body: a point far outside it would be the whole mean.
     double sum = 0.0, sum2 = 0.0, max = 0.0;
-    for (std::size_t i : body_.body) {
+    for (std::size_t i : kept_) {
       const double d = result_.distance[i];
       sum += d;
       sum2 += d * d;
       max = std::max(max, d);
     }
-    const double n = static_cast<double>(body_.body.size());
+    const double n = static_cast<double>(kept_.size());
     result_.mean_distance = sum / n;
     result_.rms_distance = std::sqrt(sum2 / n);
     result_.max_distance = max;
@@ -495,7 +497,7 @@ class Driver {
   /// Points far outside the body take the (u,v), patch and level of their nearest point of
   /// the body, and their distance to the surface there (finite: no squares).
   void place_far_points() {
-    if (result_.far_points == 0) return;
+    if (result_.far_points == 0 || options_.crop) return;  // cropped: they get no (u,v)
     const CloudIndex body(points_, body_.body);
     // Queried from as far away as the body reaches, in the point's direction: squares of
     // the point's own distance may overflow.
@@ -526,6 +528,39 @@ class Driver {
     return std::to_string(result_.far_points) + " point(s) lie far outside the cloud (beyond " + format_number(kFarOutside) +
            " times its extent; the farthest " + significant_text(farthest, 3) +
            " from the boundary's centre): left out of the target, the spacing, the surfaces and the distance statistics, each takes the (u,v) of its nearest point";
+  }
+
+  /// The points to crop (Options::crop): those outside the boundary and those far outside
+  /// the body; the rest are kept_. Their (u,v) stay until crop(): the repair's fill may lean
+  /// on them as fixed neighbours, but it neither moves them nor fits surfaces to them.
+  void choose_cropped() {
+    const std::size_t n = points_.size();
+    result_.cropped.assign(n, 0);
+    if (options_.crop) {
+      for (std::size_t i = 0; i < n; ++i) result_.cropped[i] = result_.clamped[i] || body_.far[i];
+      result_.cropped_points = static_cast<std::size_t>(std::count(result_.cropped.begin(), result_.cropped.end(), 1));
+    }
+    kept_.clear();
+    for (std::size_t i : body_.body)
+      if (!result_.cropped[i]) kept_.push_back(i);
+    if (kept_.empty())
+      fail(ErrorCode::Degenerate, "all " + std::to_string(n) + " points lie outside the boundary (more than a point spacing from the surface at the domain's edge) and were cropped: is it the boundary of this cloud?");
+  }
+
+  /// Cropped points lose their (u,v), distance, patch and level.
+  void crop() {
+    constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      if (!result_.cropped[i]) continue;
+      result_.u[i] = result_.v[i] = result_.distance[i] = kNone;
+      result_.patch[i] = result_.level[i] = -1;
+    }
+  }
+
+  /// Each message to the warning callback; with Options::strict the first fails the run.
+  void warn_or_fail(const std::vector<std::string>& messages) const {
+    if (options_.strict && !messages.empty()) fail(ErrorCode::Degenerate, "strict input checks: " + messages.front());
+    warn(messages);
   }
 
   /// Each message to the warning callback, if any (on the calling thread).
@@ -566,6 +601,7 @@ class Driver {
   Result result_;
   RefinementSettings refinement_;
   std::vector<char> inside_;  // per point: its foot lies inside its leaf (A2)
+  std::vector<std::size_t> kept_;  // the body less the cropped points, increasing
 };
 
 }  // namespace

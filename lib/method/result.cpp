@@ -10,6 +10,19 @@ std::size_t Result::leaf_count() const {
   return static_cast<std::size_t>(std::count_if(patches.begin(), patches.end(), [](const Patch& p) { return p.is_leaf(); }));
 }
 
+std::vector<std::int32_t> Result::point_flags() const {
+  std::vector<std::int32_t> flags(u.size(), 0);
+  auto set = [&](const std::vector<char>& per_point, PointFlag bit) {
+    for (std::size_t i = 0; i < per_point.size() && i < flags.size(); ++i)
+      if (per_point[i]) flags[i] |= bit;
+  };
+  set(repaired, kPointRepaired);
+  set(outside_body, kPointFar);
+  set(clamped, kPointClamped);
+  set(cropped, kPointCropped);
+  return flags;
+}
+
 int Result::leaf_at(double u, double v) const {
   if (patches.empty()) fail(ErrorCode::Internal, "result has no patches");
   int id = 0;

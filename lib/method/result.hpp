@@ -8,6 +8,14 @@
 
 namespace dbs {
 
+/// Bits of Result::point_flags; values equal the DBS_POINT_* of the C API.
+enum PointFlag : std::int32_t {
+  kPointRepaired = 1,  ///< the last-resort repair gave it its (u,v) (Result::repaired)
+  kPointFar = 2,       ///< far outside the cloud's body (Result::outside_body)
+  kPointClamped = 4,   ///< outside the boundary (Result::clamped)
+  kPointCropped = 8,   ///< cropped (Result::cropped)
+};
+
 struct Result {
   // per point, input order
   std::vector<double> u, v, distance;
@@ -46,11 +54,29 @@ struct Result {
   /// nearest point of the body and is left out of the surfaces, the repair and the statistics.
   std::vector<char> outside_body;
   std::size_t far_points = 0;
+  /// Per point: 1 when outside the boundary (input_checks.hpp: its foot, before the repair,
+  /// lay on the domain's edge more than a spacing h from the surface); all 0 for an empty run.
+  std::vector<char> clamped;
+  /// Per point: 1 when cropped (Options::crop: clamped or far outside the body): its u, v and
+  /// distance are NaN, its patch and level -1, and every statistic, validation and file
+  /// leaves it out.
+  std::vector<char> cropped;
+  std::size_t cropped_points = 0;
   double seconds = 0.0;
   /// Wall-clock time of each stage (their sum is about `seconds`).
   struct StageSeconds {
     double index = 0.0, evolve = 0.0, subdivide = 0.0, parameterize = 0.0, folds = 0.0;
   } stage_seconds;
+
+  /// Whether point i is left out of the statistics and the validation: far outside the
+  /// body (its (u,v) is borrowed from a neighbour) or cropped (it has none).
+  bool left_out(std::size_t i) const {
+    return (i < outside_body.size() && outside_body[i]) || (i < cropped.size() && cropped[i]);
+  }
+  /// Whether point i was cropped (it has no (u,v)).
+  bool is_cropped(std::size_t i) const { return i < cropped.size() && cropped[i]; }
+  /// Per point, the PointFlag bits that hold for it.
+  std::vector<std::int32_t> point_flags() const;
 
   std::size_t leaf_count() const;
   /// The leaf whose rectangle contains (u,v); on a seam the one with the larger u (then v)

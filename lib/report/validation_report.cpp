@@ -2,8 +2,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
-#include <system_error>
 
 #include "circle_pattern.hpp"
 #include "distance_stats.hpp"
@@ -12,6 +10,7 @@
 #include "mesh_files.hpp"
 #include "png_file.hpp"
 #include "raster_view.hpp"
+#include "report_directory.hpp"
 #include "report_pictures.hpp"
 #include "suspicious_triangles.hpp"
 #include "textured_mesh.hpp"
@@ -87,9 +86,7 @@ void write_text_file(const std::string& path, const std::string& text) {
 }  // namespace
 
 void write_validation_report(const Result& result, const PointCloud& cloud, const Options& options, const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) fail(ErrorCode::Io, "cannot create the report directory '" + dir + "'" + (ec ? ": " + ec.message() : ""));
+  make_report_directory(dir);
   const std::string base = dir + "/";
 
   Stopwatch clock;
@@ -117,7 +114,9 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   json.begin_object();
   json.integer("points", static_cast<long long>(cloud.size()));
   json.begin_object("options");
-  for (int id = 0; id <= static_cast<int>(OptionId::CeresFunctionTolerance); ++id) json.number(option_info(id).name, get_option(options, id));
+  // The parameterization's options (the outline's neighbourhood is not one of them).
+  for (int id = 0; id <= static_cast<int>(OptionId::Strict); ++id)
+    if (id != static_cast<int>(OptionId::OutlineNeighbours)) json.number(option_info(id).name, get_option(options, id));
   json.end_object();
   json.begin_object("timings_seconds");
   json.number("parameterize", result.seconds);
@@ -171,7 +170,7 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   write_distances(json, "overall", distances.overall);
   json.end_object();
   json.begin_object("mesh");
-  json.integer("vertices", static_cast<long long>(cloud.size()));
+  json.integer("vertices", static_cast<long long>(cloud.size() - result.cropped_points));
   json.integer("triangles", static_cast<long long>(mesh.triangles.size()));
   json.integer("suspicious", static_cast<long long>(mesh.suspicious.size()));
   json.number("suspicious_edge_factor", kSuspiciousEdgeFactor);
@@ -187,6 +186,15 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   json.integer("coincident_points", static_cast<long long>(result.coincident_points));
   json.number("folded_share", result.folded_share);
   json.integer("repaired_points", static_cast<long long>(result.repaired_points));
+  json.end_object();
+  // The inputs checked against each other (DBS_STAT_BOUNDARY_GAP and the five after it).
+  json.begin_object("inputs");
+  json.number("boundary_gap", result.boundary_gap);
+  json.number("scale_ratio", result.scale_ratio);
+  json.number("coverage", result.coverage);
+  json.integer("clamped_points", static_cast<long long>(result.clamped_points));
+  json.integer("far_points", static_cast<long long>(result.far_points));
+  json.integer("cropped_points", static_cast<long long>(result.cropped_points));
   json.end_object();
   json.begin_object("distortion");
   write_distortion(json, "per_axis", per_axis.summary);

@@ -55,11 +55,11 @@ DistanceReport distance_statistics(const std::vector<double>& distances, const s
 }
 
 DistanceReport distance_statistics(const Result& result, double tolerance) {
-  if (result.far_points == 0) return distance_statistics(result.distance, result.patch, result.patches.size(), tolerance);
+  if (result.far_points == 0 && result.cropped_points == 0) return distance_statistics(result.distance, result.patch, result.patches.size(), tolerance);
   std::vector<double> distances;
   std::vector<std::int32_t> patch;
   for (std::size_t i = 0; i < result.distance.size(); ++i) {
-    if (i < result.outside_body.size() && result.outside_body[i]) continue;
+    if (result.left_out(i)) continue;
     distances.push_back(result.distance[i]);
     patch.push_back(result.patch[i]);
   }

@@ -29,8 +29,8 @@ struct DistanceReport {
 /// Error(NonFinite) naming the first non-finite distance or tolerance.
 DistanceReport distance_statistics(const std::vector<double>& distances, const std::vector<std::int32_t>& patch, std::size_t patch_count, double tolerance);
 
-/// The same of a result's points, those far outside the cloud's body (Result::outside_body)
-/// left out, as in the result's own mean and max distance.
+/// The same of a result's points, those far outside the cloud's body and those cropped
+/// (Result::left_out) left out, as in the result's own mean and max distance.
 DistanceReport distance_statistics(const Result& result, double tolerance);
 
 }  // namespace dbs

@@ -33,10 +33,12 @@ struct TriangleDistortion {
   double edge_difference = 0.0;  // largest |edge length in (u',v') - in 3D| / length in 3D of the three edges
   bool folded = false;           // orientation opposite to the majority of the triangles
   bool degenerate = false;       // zero area in 3D or in (u,v): no measures, in no summary
+  bool cropped = false;          // a vertex has no (u,v) (a cropped point): no measures, in no summary
 };
 
 struct DistortionSummary {
-  std::size_t triangles = 0;   // measured triangles
+  std::size_t triangles = 0;   // measured triangles (the cropped ones not included)
+  std::size_t cropped = 0;     // triangles with a cropped vertex, left out
   std::size_t degenerate = 0;
   std::size_t folded = 0;
   double scale_u = 1.0, scale_v = 1.0;  // the domain scaling applied

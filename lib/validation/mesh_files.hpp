@@ -1,6 +1,8 @@
 // Writing a triangle mesh over a cloud's points with their parameters as texture
 // coordinates: Wavefront .obj (+ .mtl naming a texture picture) and binary .ply. Vertices
-// are all the points in input order, used by a triangle or not, so vertex i is cloud point i.
+// are all the points that have a (u,v) in input order, used by a triangle or not, so vertex i
+// is cloud point i unless points were cropped (their u and v are NaN: they are left out and
+// the later vertices move up).
 #pragma once
 #include <string>
 #include <vector>

@@ -16,6 +16,24 @@ void require_matching(const Result& result, const PointCloud& cloud) {
   if (result.u.size() != cloud.size()) fail(ErrorCode::InvalidArgument, "the result has " + std::to_string(result.u.size()) + " points but the cloud " + std::to_string(cloud.size()) + ": pass the cloud that was parameterized");
 }
 
+/// The Delaunay triangles of the points that have a (u,v): all, or all but the cropped ones
+/// (their vertex indices are those of the cloud either way).
+std::vector<Triangle> triangulate_kept(const Result& result) {
+  if (result.cropped_points == 0) return delaunay_triangulate(result.u, result.v);
+  std::vector<std::int32_t> kept;
+  std::vector<double> u, v;
+  for (std::size_t i = 0; i < result.u.size(); ++i) {
+    if (result.is_cropped(i)) continue;
+    kept.push_back(static_cast<std::int32_t>(i));
+    u.push_back(result.u[i]);
+    v.push_back(result.v[i]);
+  }
+  std::vector<Triangle> triangles = delaunay_triangulate(u, v);
+  for (Triangle& t : triangles)
+    for (std::int32_t& vertex : t) vertex = kept[static_cast<std::size_t>(vertex)];
+  return triangles;
+}
+
 }  // namespace
 
 std::vector<Vec3> surface_normals_at(const Result& result, const std::vector<Triangle>& triangles, int threads) {
@@ -32,7 +50,7 @@ std::vector<Vec3> surface_normals_at(const Result& result, const std::vector<Tri
 ValidationMesh build_validation_mesh(const Result& result, const PointCloud& cloud, int threads) {
   require_matching(result, cloud);
   ValidationMesh mesh;
-  mesh.triangles = delaunay_triangulate(result.u, result.v);
+  mesh.triangles = triangulate_kept(result);
   const CloudIndex index(cloud.points());
   mesh.suspicious = find_suspicious_triangles(cloud.points(), mesh.triangles, local_spacing(index, threads));
   mesh.surface_normals = surface_normals_at(result, mesh.triangles, threads);
@@ -46,7 +64,25 @@ Distortion measure_result_distortion(const Result& result, const PointCloud& clo
       if (vertex < 0 || static_cast<std::size_t>(vertex) >= cloud.size()) fail(ErrorCode::OutOfRange, "triangle " + std::to_string(t) + " has vertex index " + std::to_string(vertex) + " outside the " + std::to_string(cloud.size()) + " points");
     }
   }
-  return measure_distortion(cloud.points(), result.u, result.v, triangles, scaling, surface_normals_at(result, triangles, threads));
+  if (result.cropped_points == 0) return measure_distortion(cloud.points(), result.u, result.v, triangles, scaling, surface_normals_at(result, triangles, threads));
+  // Triangles with a cropped vertex have no (u,v) image: measured are the others, and the
+  // result lists every triangle in the caller's order.
+  std::vector<Triangle> measured;
+  std::vector<std::size_t> position;
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const Triangle& tri = triangles[t];
+    if (result.is_cropped(tri[0]) || result.is_cropped(tri[1]) || result.is_cropped(tri[2])) continue;
+    measured.push_back(tri);
+    position.push_back(t);
+  }
+  Distortion part = measure_distortion(cloud.points(), result.u, result.v, measured, scaling, surface_normals_at(result, measured, threads));
+  Distortion whole;
+  whole.summary = part.summary;
+  whole.summary.cropped = triangles.size() - measured.size();
+  whole.triangles.resize(triangles.size());
+  for (TriangleDistortion& d : whole.triangles) d.cropped = true;
+  for (std::size_t k = 0; k < measured.size(); ++k) whole.triangles[position[k]] = part.triangles[k];
+  return whole;
 }
 
 }  // namespace dbs

@@ -124,6 +124,52 @@ static void corners_given_as_points(void **state) {
   dbs_cloud_destroy(cloud);
 }
 
+/* The boundary's report: boundary.png (a PNG of 960 x 520) and boundary.json naming the hole;
+ * bad arguments refused. The picture's content is checked by core_test_boundary_report. */
+static void writes_the_boundary_report(void **state) {
+  (void)state;
+  dbs_cloud *cloud = plate();
+  dbs_boundary *boundary = NULL;
+  assert_ok(dbs_boundary_detect(cloud, NULL, &boundary));
+  char dir[512], path[600];
+  temp_path(dir, sizeof dir, "boundary_report");
+  int32_t report = 0;
+  assert_ok(dbs_has_feature(DBS_FEATURE_REPORT, &report));
+  if (!report) {
+    assert_failure(dbs_boundary_report_write(boundary, cloud, dir), DBS_ERR_UNSUPPORTED, "dbs_boundary_report_write", "without the report");
+  } else {
+    assert_ok(dbs_boundary_report_write(boundary, cloud, dir));
+    size_t size = 0;
+    snprintf(path, sizeof path, "%s/boundary.png", dir);
+    unsigned char *png = (unsigned char *)read_all(path, &size);
+    assert_true(size > 24 && memcmp(png, "\x89PNG\r\n\x1a\n", 8) == 0);
+    /* IHDR: width and height, big-endian, at bytes 16 and 20 */
+    assert_int_equal(((unsigned)png[16] << 24) | ((unsigned)png[17] << 16) | ((unsigned)png[18] << 8) | png[19], 960);
+    assert_int_equal(((unsigned)png[20] << 24) | ((unsigned)png[21] << 16) | ((unsigned)png[22] << 8) | png[23], 520);
+    free(png);
+    snprintf(path, sizeof path, "%s/boundary.json", dir);
+    char *json = read_all(path, &size);
+    const char *holes = strstr(json, "\"holes\": [");
+    assert_non_null(holes);
+    assert_non_null(strstr(holes, "\"points\": ")); /* the one hole's object */
+    assert_non_null(strstr(json, "\"name\": \"bottom v=0\""));
+    free(json);
+    /* a directory that cannot be made: a file stands in its way */
+    snprintf(path, sizeof path, "%s/boundary.json/sub", dir);
+    assert_failure(dbs_boundary_report_write(boundary, cloud, path), DBS_ERR_IO, "dbs_boundary_report_write", "cannot create the report directory");
+    snprintf(path, sizeof path, "%s/boundary.png", dir);
+    remove(path);
+    snprintf(path, sizeof path, "%s/boundary.json", dir);
+    remove(path);
+    remove(dir);
+  }
+  assert_failure(dbs_boundary_report_write(NULL, cloud, dir), DBS_ERR_NULL_ARGUMENT, "dbs_boundary_report_write", "boundary");
+  assert_failure(dbs_boundary_report_write(boundary, NULL, dir), DBS_ERR_NULL_ARGUMENT, "dbs_boundary_report_write", "cloud");
+  assert_failure(dbs_boundary_report_write(boundary, cloud, NULL), DBS_ERR_NULL_ARGUMENT, "dbs_boundary_report_write", "dir");
+  dbs_boundary_destroy(boundary);
+  dbs_cloud_destroy(cloud);
+}
+
 static void bad_arguments(void **state) {
   (void)state;
   dbs_cloud *cloud = plate();
@@ -181,6 +227,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(detects_the_plate_and_its_hole),
       cmocka_unit_test(corners_given_as_points),
+      cmocka_unit_test(writes_the_boundary_report),
       cmocka_unit_test(bad_arguments),
       cmocka_unit_test(a_closed_surface_has_no_outline),
   };

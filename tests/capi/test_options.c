@@ -35,6 +35,8 @@ static const struct option_row kOptions[] = {
     {DBS_OPT_CERES_MAX_ITERATIONS, "ceres_max_iterations", 1, 25, 1, 1000, 1, 0, 1001},
     {DBS_OPT_CERES_FUNCTION_TOLERANCE, "ceres_function_tolerance", 0, 1e-6, 1e-16, 1.0, 1, 0.5e-16, 1.5},
     {DBS_OPT_OUTLINE_NEIGHBOURS, "outline_neighbours", 1, 24, 6, 256, 1, 5, 257},
+    {DBS_OPT_CROP, "crop", 1, 0, 0, 1, 1, -1, 2},
+    {DBS_OPT_STRICT, "strict", 1, 0, 0, 1, 1, -1, 2},
 };
 #define OPTION_COUNT (sizeof kOptions / sizeof kOptions[0])
 
@@ -183,7 +185,7 @@ static void the_wrong_type_is_rejected(void **state) {
 static void unknown_ids_are_rejected(void **state) {
   (void)state;
   dbs_options *options = new_options();
-  const int32_t unknown[] = {-1, 17, 1000};
+  const int32_t unknown[] = {-1, 19, 1000};
   for (int k = 0; k < 3; ++k) {
     char needle[48];
     snprintf(needle, sizeof needle, "option id %d", (int)unknown[k]);

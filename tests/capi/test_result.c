@@ -144,8 +144,8 @@ static void statistics(void **state) {
   assert_true(result_stat(f->result, DBS_STAT_FAR_POINTS) == 0);
 
   double value = -7;
-  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 34)");
-  assert_failure(dbs_result_stat(f->result, 34, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 34 ");
+  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 35)");
+  assert_failure(dbs_result_stat(f->result, 35, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 35 ");
   assert_true(value == -7);
 }
 

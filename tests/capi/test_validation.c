@@ -500,11 +500,11 @@ static void test_errors(void **state) {
   assert_failure(dbs_distortion_create(f->plane_result, f->plane, bad, 1, -1, &d), DBS_ERR_OUT_OF_RANGE, "dbs_distortion_create", "scaling");
   assert_null(d);
   assert_ok(dbs_mesh_distortion(f->plane_mesh, DBS_SCALING_UNIFORM, &d));
-  assert_failure(dbs_distortion_stat(d, DBS_DISTORTION_MESH_STRETCH_L2 + 1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_distortion_stat", "stat");
+  assert_failure(dbs_distortion_stat(d, DBS_DISTORTION_CROPPED + 1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_distortion_stat", "stat");
   assert_failure(dbs_distortion_stat(d, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_distortion_stat", "stat");
   assert_failure(dbs_distortion_summary(d, DBS_MEASURE_FOLDED, DBS_SUMMARY_MEAN, &value), DBS_ERR_OUT_OF_RANGE, "dbs_distortion_summary", "measure");
   assert_failure(dbs_distortion_summary(d, DBS_MEASURE_AREA, DBS_SUMMARY_MAX + 1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_distortion_summary", "summary");
-  assert_failure(dbs_distortion_values(d, DBS_MEASURE_DEGENERATE + 1, xyz, 3), DBS_ERR_OUT_OF_RANGE, "dbs_distortion_values", "measure");
+  assert_failure(dbs_distortion_values(d, DBS_MEASURE_CROPPED + 1, xyz, 3), DBS_ERR_OUT_OF_RANGE, "dbs_distortion_values", "measure");
   assert_failure(dbs_distortion_values(d, DBS_MEASURE_AREA, xyz, 3), DBS_ERR_BUFFER_TOO_SMALL, "dbs_distortion_values", "out");
   dbs_distortion_destroy(d);
 
