@@ -10,6 +10,8 @@ namespace dbs {
 
 namespace {
 
+constexpr const char* kSwappedHint = "was a cloud given where the boundary file belongs (CLOUD and BOUNDARY in the wrong order)?";
+
 constexpr std::array<Side, 4> kSides = {Side::Bottom, Side::Right, Side::Top, Side::Left};
 
 // The side a section line names (case-insensitive); false for any other word.
@@ -30,6 +32,11 @@ bool is_single_word(std::string_view line) { return line.find_first_of(" \t,") =
 std::string first_token(std::string_view line) { return std::string(line.substr(0, line.find_first_of(" \t,"))); }
 
 }  // namespace
+
+bool is_boundary_section_name(std::string_view word) {
+  Side side;
+  return side_named(word, side);
+}
 
 Boundary load_boundary(const std::string& path) { return load_boundary(path, Boundary::CornerTolerance{Boundary::kCornerTolerance, true}); }
 
@@ -54,7 +61,7 @@ Boundary load_boundary(const std::string& path, Boundary::CornerTolerance tolera
       section_line[current] = lines.number();
       continue;
     }
-    if (current < 0) fail(ErrorCode::Parse, at + ": a point before any section name (bottom, right, top or left)");
+    if (current < 0) fail(ErrorCode::Parse, at + ": a point before any section name (bottom, right, top or left): " + kSwappedHint);
     Vec3 p;
     const XyzFields fields = parse_xyz_fields(line, p);
     if (fields.count < 3) fail(ErrorCode::Parse, at + ": " + fields.problem());

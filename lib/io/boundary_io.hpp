@@ -1,6 +1,7 @@
 // Reading and writing boundary files (FORMATS.md): sections bottom/right/top/left, one point per line.
 #pragma once
 #include <string>
+#include <string_view>
 
 #include "boundary.hpp"
 
@@ -18,5 +19,8 @@ Boundary load_boundary(const std::string& path, Boundary::CornerTolerance tolera
 /// same double, so that load_boundary gives the same sides bit for bit. Error(Io) when the
 /// file cannot be written.
 void save_boundary(const Boundary& boundary, const std::string& path);
+
+/// Whether `word` names a section of a boundary file (bottom, right, top, left; any case).
+bool is_boundary_section_name(std::string_view word);
 
 }  // namespace dbs

@@ -1,5 +1,6 @@
 #include "cloud_io.hpp"
 
+#include "boundary_io.hpp"
 #include "draco_io.hpp"
 #include "error.hpp"
 #include "obj_vertices.hpp"
@@ -19,7 +20,11 @@ std::vector<Vec3> read_xyz_text(const std::string& path) {
   Vec3 p;
   while (lines.next(line)) {
     const XyzFields fields = parse_xyz_fields(line, p);
-    if (fields.count < 3) fail(ErrorCode::Parse, file_line(path, lines.number()) + ": " + fields.problem());
+    if (fields.count < 3) {
+      // A section name: the boundary file was given where the cloud belongs.
+      const std::string hint = is_boundary_section_name(line) ? ": this is a boundary file, not a cloud (CLOUD and BOUNDARY in the wrong order?)" : "";
+      fail(ErrorCode::Parse, file_line(path, lines.number()) + ": " + fields.problem() + hint);
+    }
     if (!is_finite(p)) fail(ErrorCode::NonFinite, file_line(path, lines.number()) + ": non-finite coordinate in '" + excerpt(line) + "'");
     points.push_back(p);
   }
