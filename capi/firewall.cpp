@@ -20,6 +20,8 @@ class StatusError : public std::runtime_error {
 thread_local std::string last_message_storage;
 // Points into last_message_storage, or at a literal when even storing the message failed.
 thread_local const char* last_message = "";
+// The errno behind the last failure when it was an I/O error, else 0.
+thread_local int last_errno = 0;
 
 void record(const char* function, const char* prefix, const char* what) noexcept {
   try {
@@ -50,6 +52,7 @@ int status_of(ErrorCode code) noexcept {
 }  // namespace
 
 int status_of_current_exception(const char* function) noexcept {
+  last_errno = 0;
   try {
     throw;
   } catch (const StatusError& e) {
@@ -57,6 +60,7 @@ int status_of_current_exception(const char* function) noexcept {
     return e.status();
   } catch (const Error& e) {
     record(function, "", e.what());
+    if (e.code() == ErrorCode::Io) last_errno = e.system_errno();
     return status_of(e.code());
   } catch (const std::bad_alloc&) {
     record(function, "", "out of memory");
@@ -71,6 +75,8 @@ int status_of_current_exception(const char* function) noexcept {
 }
 
 const char* last_error_message() noexcept { return last_message; }
+
+int last_error_errno() noexcept { return last_errno; }
 
 void fail_status(int status, const std::string& message) { throw StatusError(status, message); }
 

@@ -27,6 +27,8 @@ int guarded(const char* function, Body&& body) noexcept {
 
 /// This thread's last error message ("" before the first failure).
 const char* last_error_message() noexcept;
+/// The errno recorded with the last failure on this thread (I/O failures only), else 0.
+int last_error_errno() noexcept;
 
 /// A failure of the C layer itself: a status dbs::ErrorCode has no equivalent for.
 [[noreturn]] void fail_status(int status, const std::string& message);

@@ -1,6 +1,8 @@
 // dbs_result_*: per-point outputs, statistics, surface evaluation and saving.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <string>
 
 #include "firewall.hpp"
 #include "number_text.hpp"
@@ -146,6 +148,23 @@ int dbs_result_evaluate(const dbs_result* result, double u, double v, double* ou
     dbs::Vec3 point = result->result.evaluate(u, v, out_normal ? &normal : nullptr);
     std::copy(point.data(), point.data() + 3, out_xyz);
     if (out_normal) std::copy(normal.data(), normal.data() + 3, out_normal);
+  });
+}
+
+int dbs_result_evaluate_many(const dbs_result* result, const double* uv, size_t n, double* out_xyz, double* out_normal, double* out_su, double* out_sv) {
+  return guarded(__func__, [&] {
+    require_non_null(result, "result");
+    if (n == 0) return;
+    require_non_null(uv, "uv");
+    require_non_null(out_xyz, "out_xyz");
+    if (n > SIZE_MAX / 3 / sizeof(double)) fail_status(DBS_ERR_INVALID_ARGUMENT, "n = " + std::to_string(n) + " is more points than any array can hold");
+    // Every pair is checked before anything is written: a refused call leaves the outputs as they were.
+    for (size_t k = 0; k < n; ++k) {
+      const std::string at = " of pair " + std::to_string(k);
+      require_unit(("u" + at).c_str(), uv[2 * k]);
+      require_unit(("v" + at).c_str(), uv[2 * k + 1]);
+    }
+    result->result.evaluate_many(uv, n, out_xyz, out_normal, out_su, out_sv, 0);
   });
 }
 

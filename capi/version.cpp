@@ -68,3 +68,5 @@ const char* dbs_status_string(int status) {
 }
 
 const char* dbs_last_error_message(void) { return dbs::capi::last_error_message(); }
+
+int dbs_last_error_errno(void) { return dbs::capi::last_error_errno(); }

@@ -187,6 +187,10 @@ DBS_API const char *dbs_status_string(int status);
  *  The string is owned by the library and stays valid until the next libdbs call
  *  on the same thread. Successful calls do not clear it. Cannot fail. \since 0.1 */
 DBS_API const char *dbs_last_error_message(void);
+/** The operating system's errno behind the last failure on the calling thread when it was
+ *  DBS_ERR_IO (ENOENT for a missing file, EACCES for a refused one, ...), so a host can tell
+ *  them apart; 0 when that failure was no I/O error or had no errno. \since 0.4 */
+DBS_API int dbs_last_error_errno(void);
 
 /* ---- point clouds (\since 0.1) ------------------------------------------------- */
 /** An immutable set of 3D points, in the order given. \since 0.1 */
@@ -560,6 +564,15 @@ DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, do
 /** One summary statistic (DBS_STAT_*) of the result, in the unit given beside its id.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (stat). \since 0.1 */
 DBS_API int dbs_result_stat(const dbs_result *result, int32_t stat, double *out);
+/** dbs_result_evaluate at n points at once, with the derivatives: `uv` holds n pairs (u, v),
+ *  each in [0, 1]; out_xyz receives 3n values (the surface points), and out_normal (unit
+ *  normals), out_su and out_sv (the partial derivatives dS/du and dS/dv of the global
+ *  parameters, cloud units per unit of u or v), 3n values each when not NULL. uv and out_xyz
+ *  may be NULL when n is 0. Uses all hardware threads; the values do not depend on them.
+ *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_NON_FINITE, DBS_ERR_OUT_OF_RANGE (a parameter, named
+ *  with its pair's index; nothing is written then), DBS_ERR_INVALID_ARGUMENT (n beyond any
+ *  array), DBS_ERR_NO_MEMORY. \since 0.4 */
+DBS_API int dbs_result_evaluate_many(const dbs_result *result, const double *uv, size_t n, double *out_xyz, double *out_normal, double *out_su, double *out_sv);
 
 /** The result's quadtree: all patches, indexed by patch id; valid while `result` lives
  *  (owned by the result: do not destroy it). Returns DBS_ERR_NULL_ARGUMENT. \since 0.1 */

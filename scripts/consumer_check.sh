@@ -79,6 +79,38 @@ if [ -n "$foreign" ]; then
 fi
 echo "  $(nm -D --defined-only "$library" | grep -c ' dbs_') dbs_* functions, nothing else"
 
+# The Python package: installed with the library (and moved with it) it imports without
+# DBS_LIBRARY; `pip install --no-build-isolation` of the source tree works offline in a venv.
+python=""
+for candidate in /usr/bin/python3 python3; do
+  if [ -z "$python" ] && command -v "$candidate" >/dev/null && "$candidate" -c "import numpy" 2>/dev/null; then python="$(command -v "$candidate")"; fi
+done
+if [ -z "$python" ]; then
+  echo "consumer_check: no python3 with NumPy (scripts/setup.sh installs python3-numpy)" >&2
+  exit 1
+fi
+python_check='import numpy as np, libdbs
+g = np.linspace(0.0, 1.0, 21)
+x, y = np.meshgrid(g, g)
+points = np.column_stack([x.ravel(), y.ravel(), 0.0 * x.ravel()])
+side = lambda a, b: np.array([a + t * (np.array(b) - np.array(a)) for t in g])
+boundary = libdbs.Boundary(side([0, 0, 0], [1, 0, 0]), side([1, 0, 0], [1, 1, 0]), side([0, 1, 0], [1, 1, 0]), side([0, 0, 0], [0, 1, 0]))
+result = libdbs.parameterize(points, boundary, max_level=0)
+assert np.abs(result.uv - points[:, :2]).max() < 1e-9
+print("  import libdbs from", libdbs.__file__, "with", libdbs.lib._name, ":", result)'
+installed="$(find "$prefixes/shared" -name _installed.py -path '*/libdbs/*' -print -quit)"
+if [ -z "$installed" ]; then
+  echo "consumer_check: cmake --install did not install the Python package" >&2
+  exit 1
+fi
+echo "consumer_check: [shared] the installed Python package"
+(cd "$prefixes" && env -u DBS_LIBRARY PYTHONPATH="$(dirname "$(dirname "$installed")")" "$python" -c "$python_check")
+echo "consumer_check: pip install --no-build-isolation of python/ into a venv"
+cp -r "$repo/python" "$prefixes/python-source"
+"$python" -m venv --system-site-packages "$prefixes/venv"
+"$prefixes/venv/bin/pip" install -q --no-build-isolation --no-index "$prefixes/python-source"
+(cd "$prefixes" && DBS_LIBRARY="$library" "$prefixes/venv/bin/python" -c "$python_check")
+
 install_libdbs static -DDBS_BUILD_SHARED=OFF -DDBS_WITH_CERES=ON
 echo "consumer_check: [static] dbs.pc names Ceres and glog for the static link"
 pc_file="$(find "$prefixes/static" -name dbs.pc -print -quit)"

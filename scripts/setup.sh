@@ -13,6 +13,7 @@ packages=(
   build-essential cmake pkg-config ccache gfortran python3 binutils
   libeigen3-dev libnanoflann-dev libceres-dev libdraco-dev
   libcmocka-dev libqhull-dev libpng-dev locales
+  python3-numpy python3-pytest python3-setuptools python3-venv python3-pip
 )
 
 sudo=""

@@ -103,6 +103,10 @@ module dbs
       import :: c_ptr
       type(c_ptr) :: dbs_last_error_message
     end function
+    function dbs_last_error_errno() bind(C, name="dbs_last_error_errno")
+      import :: c_int
+      integer(c_int) :: dbs_last_error_errno
+    end function
 
     ! ---- point clouds ------------------------------------------------------------------
     function dbs_cloud_create(xyz, count, out) bind(C, name="dbs_cloud_create")
@@ -393,6 +397,16 @@ module dbs
       real(c_double), intent(out) :: out_xyz(3)
       real(c_double), intent(out), optional :: out_normal(3)
       integer(c_int) :: dbs_result_evaluate
+    end function
+    ! out_normal, out_su and out_sv may be c_null_ptr (else c_loc of 3*n values each).
+    function dbs_result_evaluate_many(result, uv, n, out_xyz, out_normal, out_su, out_sv) bind(C, name="dbs_result_evaluate_many")
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: result
+      real(c_double), intent(in) :: uv(*)
+      integer(c_size_t), value :: n
+      real(c_double), intent(out) :: out_xyz(*)
+      type(c_ptr), value :: out_normal, out_su, out_sv
+      integer(c_int) :: dbs_result_evaluate_many
     end function
     function dbs_result_stat(result, stat, out) bind(C, name="dbs_result_stat")
       import :: c_int, c_int32_t, c_double, c_ptr

@@ -20,16 +20,22 @@ enum class ErrorCode {
   Internal,
 };
 
-/// The one exception type of the core: a code and a message naming what is wrong.
+/// The one exception type of the core: a code and a message naming what is wrong, and for
+/// an I/O failure the operating system's errno behind it (0 when there is none).
 class Error : public std::runtime_error {
  public:
-  Error(ErrorCode code, const std::string& message) : std::runtime_error(message), code_(code) {}
+  Error(ErrorCode code, const std::string& message, int system_errno = 0) : std::runtime_error(message), code_(code), system_errno_(system_errno) {}
   ErrorCode code() const noexcept { return code_; }
+  int system_errno() const noexcept { return system_errno_; }
 
  private:
   ErrorCode code_;
+  int system_errno_;
 };
 
 [[noreturn]] inline void fail(ErrorCode code, const std::string& message) { throw Error(code, message); }
+/// An I/O failure with the errno that caused it (so a binding can tell a missing file from a
+/// refused one).
+[[noreturn]] inline void fail_io(const std::string& message, int system_errno) { throw Error(ErrorCode::Io, message, system_errno); }
 
 }  // namespace dbs

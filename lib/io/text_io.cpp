@@ -16,6 +16,17 @@ namespace dbs {
 
 namespace {
 
+/// An I/O failure: `what` and the system's reason, with its errno (read first: building the
+/// message must not change it).
+[[noreturn]] void fail_with_errno(const std::string& what) {
+  const int error = errno;
+  fail_io(what + ": " + std::strerror(error), error);
+}
+
+}  // namespace
+
+namespace {
+
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 bool is_field_end(char c) { return is_blank(c) || c == ','; }
 
@@ -83,7 +94,7 @@ std::string lowercase_extension(const std::string& path) {
 
 std::string read_file_bytes(const std::string& path) {
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
-  if (!file) fail(ErrorCode::Io, "cannot open '" + path + "': " + std::strerror(errno));
+  if (!file) fail_with_errno("cannot open '" + path + "'");
   std::string bytes;
   std::error_code size_error;
   const auto size = std::filesystem::file_size(path, size_error);
@@ -91,12 +102,12 @@ std::string read_file_bytes(const std::string& path) {
   char chunk[1 << 16];
   std::size_t got;
   while ((got = std::fread(chunk, 1, sizeof chunk, file.get())) > 0) bytes.append(chunk, got);
-  if (std::ferror(file.get())) fail(ErrorCode::Io, "cannot read '" + path + "': " + std::strerror(errno));
+  if (std::ferror(file.get())) fail_with_errno("cannot read '" + path + "'");
   return bytes;
 }
 
 OutputFile::OutputFile(const std::string& path) : path_(path), file_(std::fopen(path.c_str(), "wb")) {
-  if (!file_) fail(ErrorCode::Io, "cannot create '" + path + "': " + std::strerror(errno));
+  if (!file_) fail_with_errno("cannot create '" + path + "'");
 }
 
 OutputFile::~OutputFile() {
@@ -110,7 +121,7 @@ void OutputFile::write(std::string_view bytes) {
 }
 
 void OutputFile::flush() {
-  if (std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size()) fail(ErrorCode::Io, "cannot write '" + path_ + "': " + std::strerror(errno));
+  if (std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size()) fail_with_errno("cannot write '" + path_ + "'");
   buffer_.clear();
 }
 
@@ -118,7 +129,7 @@ void OutputFile::close() {
   flush();
   std::FILE* file = file_;
   file_ = nullptr;
-  if (std::fclose(file) != 0) fail(ErrorCode::Io, "cannot write '" + path_ + "': " + std::strerror(errno));
+  if (std::fclose(file) != 0) fail_with_errno("cannot write '" + path_ + "'");
 }
 
 void write_file_bytes(const std::string& path, std::string_view bytes) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "error.hpp"
+#include "parallel.hpp"
 
 namespace dbs {
 
@@ -42,6 +43,32 @@ Vec3 Result::evaluate(double u, double v, Vec3* normal) const {
   const Vec2 st = leaf.rect.to_local(u, v).cwiseMax(0.0).cwiseMin(1.0);
   if (normal) *normal = leaf.surface.normal(st.x(), st.y());
   return leaf.surface.eval(st.x(), st.y());
+}
+
+void Result::derivatives(double u, double v, Vec3& su, Vec3& sv) const {
+  const Patch& leaf = patches[leaf_at(u, v)];
+  const Vec2 st = leaf.rect.to_local(u, v).cwiseMax(0.0).cwiseMin(1.0);
+  const SurfacePoint p = leaf.surface.eval_derivs(st.x(), st.y());
+  su = p.du / (leaf.rect.u1 - leaf.rect.u0);
+  sv = p.dv / (leaf.rect.v1 - leaf.rect.v0);
+}
+
+void Result::evaluate_many(const double* uv, std::size_t n, double* xyz, double* normal, double* su, double* sv, int threads) const {
+  auto put = [](double* out, std::size_t k, const Vec3& value) {
+    if (out) std::copy(value.data(), value.data() + 3, out + 3 * k);
+  };
+  parallel_for(n, resolve_threads(threads), [&](std::size_t k) {
+    const double u = uv[2 * k], v = uv[2 * k + 1];
+    Vec3 n_k;
+    put(xyz, k, evaluate(u, v, normal ? &n_k : nullptr));
+    put(normal, k, n_k);
+    if (su || sv) {
+      Vec3 du, dv;
+      derivatives(u, v, du, dv);
+      put(su, k, du);
+      put(sv, k, dv);
+    }
+  });
 }
 
 }  // namespace dbs

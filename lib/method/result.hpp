@@ -84,6 +84,13 @@ struct Result {
   int leaf_at(double u, double v) const;
   /// Surface point (and unit normal) at global (u,v) in [0,1]^2.
   Vec3 evaluate(double u, double v, Vec3* normal = nullptr) const;
+  /// The surface's partial derivatives at global (u,v) with respect to u and v (the leaf's
+  /// own derivatives scaled by its rectangle's size).
+  void derivatives(double u, double v, Vec3& su, Vec3& sv) const;
+  /// evaluate() and derivatives() at n global (u,v) (uv: 2n values, each in [0,1]) into the
+  /// 3n-value outputs; any output but xyz may be null. Each k is independent, so the result
+  /// does not depend on `threads` (as Options::threads).
+  void evaluate_many(const double* uv, std::size_t n, double* xyz, double* normal, double* su, double* sv, int threads) const;
 };
 
 }  // namespace dbs

@@ -1,10 +1,10 @@
-"""Checks that the Python and Fortran bindings cover every function of dbs.h with the
-right number of arguments and every numeric constant with its value, so that nothing added
-to the header can be forgotten.
+"""Checks that the Fortran module binds every function of dbs.h with the right number of
+arguments and every numeric constant with its value, so that nothing added to the header can
+be forgotten. (The Python package's declarations are generated from dbs.h:
+scripts/generate_bindings.py.)
 
-usage: check_bindings.py DBS_H DBS_PY DBS_MODULE_F90
+usage: check_bindings.py DBS_H DBS_MODULE_F90
 """
-import ast
 import re
 import sys
 
@@ -25,23 +25,6 @@ def header_constants(text):
     return {name: float(value) for name, value in re.findall(r"^#define\s+(DBS_\w+)\s+(-?[0-9.]+)\b", text, re.MULTILINE)}
 
 
-def python_constants(text):
-    """DBS_NAME -> value, for every module-level NAME = <number> of dbs.py."""
-    constants = {}
-    for node in ast.parse(text).body:
-        if isinstance(node, ast.Assign):
-            targets = node.targets[0].elts if isinstance(node.targets[0], ast.Tuple) else node.targets
-            values = node.value.elts if isinstance(node.value, ast.Tuple) else [node.value]
-            for target, value in zip(targets, values):
-                try:
-                    number = ast.literal_eval(value)
-                except ValueError:
-                    continue
-                if isinstance(number, (int, float)) and not isinstance(number, bool):
-                    constants["DBS_" + target.id] = float(number)
-    return constants
-
-
 def fortran_constants(text):
     """DBS_NAME -> value, for every `parameter :: DBS_NAME = <number>` of the module."""
     constants = {}
@@ -56,14 +39,6 @@ def compare_constants(language, expected, actual):
     problems = [f"{language}: {name} is missing" for name in sorted(set(expected) - set(actual))]
     problems += [f"{language}: {name} = {actual[name]:g}, dbs.h has {value:g}" for name, value in sorted(expected.items()) if name in actual and actual[name] != value]
     return problems
-
-
-def python_functions(text):
-    """name -> number of argtypes, read from the PROTOTYPES table of dbs.py."""
-    for node in ast.walk(ast.parse(text)):
-        if isinstance(node, ast.Assign) and any(getattr(t, "id", None) == "PROTOTYPES" for t in node.targets):
-            return {key.value: len(value.elts[1].elts) for key, value in zip(node.value.keys, node.value.values)}
-    raise SystemExit("dbs.py has no PROTOTYPES table")
 
 
 def fortran_functions(text):
@@ -90,22 +65,20 @@ def compare(language, expected, actual):
 
 
 def main(argv):
-    if len(argv) != 4:
+    if len(argv) != 3:
         print(__doc__.strip().splitlines()[-1], file=sys.stderr)
         return 2
-    with open(argv[1]) as header, open(argv[2]) as python, open(argv[3]) as fortran:
-        header_text, python_text, fortran_text = header.read(), python.read(), fortran.read()
+    with open(argv[1]) as header, open(argv[2]) as fortran:
+        header_text, fortran_text = header.read(), fortran.read()
     expected = header_functions(header_text)
-    problems = compare("dbs.py", expected, python_functions(python_text))
-    problems += compare("dbs_module.f90", expected, fortran_functions(fortran_text))
+    problems = compare("dbs_module.f90", expected, fortran_functions(fortran_text))
     constants = header_constants(header_text)
-    problems += compare_constants("dbs.py", constants, python_constants(python_text))
     problems += compare_constants("dbs_module.f90", constants, fortran_constants(fortran_text))
     if len(expected) < 40 or len(constants) < 40:
         problems.append(f"only {len(expected)} prototypes and {len(constants)} constants found in {argv[1]}: the header parser is broken")
     for problem in problems:
         print(problem, file=sys.stderr)
-    print(f"{len(expected)} functions and {len(constants)} constants of dbs.h checked in both bindings: {len(problems)} problems")
+    print(f"{len(expected)} functions and {len(constants)} constants of dbs.h checked in the Fortran module: {len(problems)} problems")
     return 1 if problems else 0
 
 
