@@ -1,4 +1,5 @@
 /* dbs_cloud_*: creation from arrays, loading from every file format, read-back, errors. */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -143,6 +144,27 @@ static void load_text_errors_name_file_and_line(void **state) {
   assert_load_error(LOAD_CLOUD, "cloud.unknown", "0 0 0\n", 0, DBS_ERR_UNSUPPORTED, ".unknown");
 }
 
+/* The errno behind an I/O failure: ENOENT for a missing file, ENOTDIR for a path through a
+ * file; 0 after a failure that is no I/O error; kept across successful calls. */
+static void io_failures_tell_their_errno(void **state) {
+  (void)state;
+  char path[512];
+  temp_path(path, sizeof path, "no_such_cloud.xyz");
+  dbs_cloud *cloud = NULL;
+  assert_int_equal(dbs_cloud_load(path, &cloud), DBS_ERR_IO);
+  assert_int_equal(dbs_last_error_errno(), ENOENT);
+  int32_t built = 0;
+  assert_ok(dbs_has_feature(DBS_FEATURE_DRACO, &built));
+  assert_int_equal(dbs_last_error_errno(), ENOENT);
+  temp_file(path, sizeof path, "a_file.xyz", "0 0 0\n1 0 0\n0 1 0\n");
+  strcat(path, "/below.xyz");
+  assert_int_equal(dbs_cloud_load(path, &cloud), DBS_ERR_IO);
+  assert_int_equal(dbs_last_error_errno(), ENOTDIR);
+  assert_int_equal(dbs_cloud_create(NULL, 3, &cloud), DBS_ERR_NULL_ARGUMENT);
+  assert_int_equal(dbs_last_error_errno(), 0);
+  assert_null(cloud);
+}
+
 static const double kFilePoints[4][3] = {{0, 0, 0}, {1.5, 0, 0.25}, {0, 2, -1}, {3, 4, 5}};
 
 static void assert_file_points(const char *path) {
@@ -235,6 +257,7 @@ int main(void) {
       cmocka_unit_test(points_buffer_too_small),
       cmocka_unit_test(load_xyz_text),
       cmocka_unit_test(load_text_errors_name_file_and_line),
+      cmocka_unit_test(io_failures_tell_their_errno),
       cmocka_unit_test(load_ply_and_obj),
       cmocka_unit_test(load_broken_ply),
       cmocka_unit_test(destroy_accepts_null),

@@ -1,6 +1,7 @@
 /* dbs_parameterize, dbs_result_* and dbs_patches_*: a planar cloud whose parameterization is
  * known exactly, every getter, buffer checks, surface evaluation, saving. */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -208,6 +209,42 @@ static void evaluate_outside_the_domain_fails(void **state) {
   assert_failure(dbs_result_evaluate(f->result, NAN, 0.5, xyz, normal), DBS_ERR_NON_FINITE, "dbs_result_evaluate", "parameter u");
   assert_failure(dbs_result_evaluate(f->result, 0.5, INFINITY, xyz, normal), DBS_ERR_NON_FINITE, "dbs_result_evaluate", "parameter v");
   for (int c = 0; c < 3; ++c) assert_true(xyz[c] == -7 && normal[c] == -7);
+}
+
+/* dbs_result_evaluate_many: the same points and normals as dbs_result_evaluate, the plane's
+ * derivatives (W, 0, 0) and (0, H, 0), optional outputs, and a refused pair named by its index
+ * with nothing written. */
+static void evaluate_many_matches_evaluate(void **state) {
+  struct fixture *f = *state;
+  enum { N = 7 };
+  double uv[2 * N], xyz[3 * N], normal[3 * N], su[3 * N], sv[3 * N], alone[3 * N];
+  for (int k = 0; k < N; ++k) {
+    uv[2 * k] = k / (N - 1.0);
+    uv[2 * k + 1] = 0.3 + 0.1 * k;
+  }
+  assert_ok(dbs_result_evaluate_many(f->result, uv, N, xyz, normal, su, sv));
+  assert_ok(dbs_result_evaluate_many(f->result, uv, N, alone, NULL, NULL, NULL));
+  assert_memory_equal(alone, xyz, sizeof xyz);
+  for (int k = 0; k < N; ++k) {
+    double one[3], one_normal[3];
+    assert_ok(dbs_result_evaluate(f->result, uv[2 * k], uv[2 * k + 1], one, one_normal));
+    assert_memory_equal(one, xyz + 3 * k, sizeof one);
+    assert_memory_equal(one_normal, normal + 3 * k, sizeof one_normal);
+    assert_true(fabs(su[3 * k] - PLANE_W) < 1e-9 && fabs(su[3 * k + 1]) < 1e-9 && fabs(su[3 * k + 2]) < 1e-9);
+    assert_true(fabs(sv[3 * k]) < 1e-9 && fabs(sv[3 * k + 1] - PLANE_H) < 1e-9 && fabs(sv[3 * k + 2]) < 1e-9);
+  }
+  assert_ok(dbs_result_evaluate_many(f->result, NULL, 0, NULL, NULL, NULL, NULL));
+  double untouched[3 * N];
+  for (int k = 0; k < 3 * N; ++k) untouched[k] = -7;
+  uv[2 * 5 + 1] = 1.5;
+  assert_failure(dbs_result_evaluate_many(f->result, uv, N, untouched, NULL, NULL, NULL), DBS_ERR_OUT_OF_RANGE, "dbs_result_evaluate_many", "parameter v of pair 5 = 1.5 is outside [0, 1]");
+  uv[2 * 5 + 1] = NAN;
+  assert_failure(dbs_result_evaluate_many(f->result, uv, N, untouched, NULL, NULL, NULL), DBS_ERR_NON_FINITE, "dbs_result_evaluate_many", "parameter v of pair 5");
+  for (int k = 0; k < 3 * N; ++k) assert_true(untouched[k] == -7);
+  assert_failure(dbs_result_evaluate_many(NULL, uv, N, untouched, NULL, NULL, NULL), DBS_ERR_NULL_ARGUMENT, "dbs_result_evaluate_many", "result");
+  assert_failure(dbs_result_evaluate_many(f->result, NULL, N, untouched, NULL, NULL, NULL), DBS_ERR_NULL_ARGUMENT, "dbs_result_evaluate_many", "uv");
+  assert_failure(dbs_result_evaluate_many(f->result, uv, N, NULL, NULL, NULL, NULL), DBS_ERR_NULL_ARGUMENT, "dbs_result_evaluate_many", "out_xyz");
+  assert_failure(dbs_result_evaluate_many(f->result, uv, SIZE_MAX / 2, untouched, NULL, NULL, NULL), DBS_ERR_INVALID_ARGUMENT, "dbs_result_evaluate_many", "more points than any array");
 }
 
 static void the_root_patch(void **state) {
@@ -540,6 +577,7 @@ static void destroy_accepts_null(void **state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(uv_is_the_affine_map_of_xy),
+      cmocka_unit_test(evaluate_many_matches_evaluate),
       cmocka_unit_test(points_name_their_leaf),
       cmocka_unit_test(statistics),
       cmocka_unit_test(buffers_too_small_are_refused),
