@@ -3,7 +3,10 @@
 #   1. a shared build installed into a temporary prefix, then moved elsewhere (the installed
 #      dbs.pc and CMake package must find the moved tree);
 #   2. tests/consumer built with find_package(dbs) + dbs::dbs, and consumer.c built with
-#      `pkg-config --cflags --libs dbs`; both run;
+#      `pkg-config --cflags --libs dbs`; both run; the same for the Fortran module:
+#      tests/consumer_fortran (find_package(dbs COMPONENTS fortran) + dbs::fortran) and the
+#      example program built with `gfortran ... $(pkg-config --cflags --libs dbs-fortran)`,
+#      both against the installed dbs.mod, both run;
 #   3. only dbs_* symbols are exported by the installed libdbs.so;
 #   4. the same with a static build (-DDBS_BUILD_SHARED=OFF, Ceres required), pkg-config --static;
 #      its dbs.pc names Ceres (Libs.private) and glog (Requires.private);
@@ -62,12 +65,42 @@ consume() {
   "$work/pkgconfig-$name"
 }
 
+# consume_fortran NAME [--static]: builds and runs both Fortran consumers against $prefixes/NAME.
+consume_fortran() {
+  local name="$1" static="${2:-}"
+  local prefix="$prefixes/$name"
+  local pc_dir
+  pc_dir="$(dirname "$(find "$prefix" -name dbs-fortran.pc -print -quit)")"
+  if [ "$pc_dir" = "." ]; then
+    echo "consumer_check: [$name] cmake --install did not install the Fortran module (dbs-fortran.pc)" >&2
+    exit 1
+  fi
+
+  echo "consumer_check: [$name] find_package(dbs COMPONENTS fortran) + dbs::fortran"
+  rm -rf "$work/cmake-fortran-$name"
+  cmake -S "$repo/tests/consumer_fortran" -B "$work/cmake-fortran-$name" -DCMAKE_PREFIX_PATH="$prefix" \
+    -DCMAKE_BUILD_TYPE=Release -DDBS_REQUIRED_VERSION="$version" >/dev/null
+  cmake --build "$work/cmake-fortran-$name" >/dev/null
+  "$work/cmake-fortran-$name/consumer_fortran" >/dev/null
+
+  echo "consumer_check: [$name] gfortran example.f90 \$(pkg-config $static --cflags --libs dbs-fortran)"
+  local flags libdir
+  flags="$(PKG_CONFIG_PATH="$pc_dir" pkg-config $static --cflags --libs dbs-fortran)"
+  libdir="$(PKG_CONFIG_PATH="$pc_dir" pkg-config --variable=libdir dbs-fortran)"
+  echo "  pkg-config: $flags"
+  mkdir -p "$work/pkgconfig-fortran-$name"
+  # shellcheck disable=SC2086  # the flags are meant to split into words
+  (cd "$work/pkgconfig-fortran-$name" && gfortran "$repo/examples/fortran/example.f90" $flags -Wl,-rpath,"$libdir" -o consumer_fortran)
+  "$work/pkgconfig-fortran-$name/consumer_fortran" >/dev/null
+}
+
 mkdir -p "$work"
 # major.minor of this tree: what an outside project asks find_package(dbs) for
 version="$(sed -n 's/^project(dbs VERSION \([0-9]*\.[0-9]*\).*/\1/p' "$repo/CMakeLists.txt")"
 
 install_libdbs shared -DDBS_BUILD_SHARED=ON
 consume shared
+consume_fortran shared
 
 echo "consumer_check: [shared] exported symbols"
 library="$(find "$prefixes/shared" -name 'libdbs.so.*' -type f -print -quit)"
@@ -119,6 +152,7 @@ if ! grep -q -- '^Libs.private:.*-lceres' "$pc_file" || ! grep -q '^Requires.pri
   exit 1
 fi
 consume static --static
+consume_fortran static --static
 
 minimal=(-DDBS_WITH_DRACO=OFF -DDBS_WITH_CERES=OFF -DDBS_WITH_VALIDATION=OFF -DDBS_WITH_REPORT=OFF)
 install_libdbs minimal-static -DDBS_BUILD_SHARED=OFF "${minimal[@]}"

@@ -1,13 +1,19 @@
 #!/usr/bin/env python3
-"""Generates the ctypes declarations of the Python package (python/libdbs/_capi.py) from
-include/dbs.h, which is written for it: one prototype per line, plain C types, every
-constant a `#define DBS_NAME <number>`, callbacks as `typedef ... (*dbs_name_fn)(...)`.
+"""Generates the bindings of libdbs from include/dbs.h, which is written for it: one prototype
+per line, plain C types, every constant a `#define DBS_NAME <number>`, callbacks as
+`typedef ... (*dbs_name_fn)(...)`. Each OUTPUT's extension says which:
+  .py   the ctypes declarations of the Python package (python/libdbs/_capi.py);
+  .inc  the Fortran constants and interface blocks (fortran/dbs_capi.inc; fortran_bindings.py).
 
-usage: generate_bindings.py DBS_H OUTPUT            writes OUTPUT
-       generate_bindings.py --check DBS_H OUTPUT    exit 1 when OUTPUT differs from what it would write
+usage: generate_bindings.py DBS_H OUTPUT...            writes each OUTPUT
+       generate_bindings.py --check DBS_H OUTPUT...    exit 1 when an OUTPUT differs from what it would write
 """
+import os
 import re
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import fortran_bindings  # noqa: E402  (beside this script)
 
 # C parameter and return types -> ctypes expressions. Handles (pointers to the opaque
 # structs) travel as void pointers; out-handles as pointers to them.
@@ -104,26 +110,39 @@ def render(constants, integer_options, callbacks, functions):
     return "\n".join(out)
 
 
+def generate(header_text, output):
+    """The text `output` should hold, by its extension."""
+    if output.endswith(".py"):
+        return render(*read_header(header_text))
+    if output.endswith(".inc"):
+        return fortran_bindings.render(header_text)
+    raise SystemExit(f"generate_bindings: {output}: an output ends in .py (ctypes) or .inc (Fortran)")
+
+
 def main(argv):
     check = argv[:1] == ["--check"]
     if check:
         argv = argv[1:]
-    if len(argv) != 2:
+    if len(argv) < 2:
         raise SystemExit(__doc__)
-    header, output = argv
+    header, outputs = argv[0], argv[1:]
     with open(header, encoding="utf-8") as f:
-        text = render(*read_header(f.read()))
-    if check:
-        with open(output, encoding="utf-8") as f:
-            committed = f.read()
-        if committed != text:
-            print(f"generate_bindings: {output} differs from what include/dbs.h gives: run scripts/generate_bindings.py {header} {output}")
-            return 1
-        print(f"generate_bindings: {output} matches {header}")
-        return 0
-    with open(output, "w", encoding="utf-8") as f:
-        f.write(text)
-    return 0
+        header_text = f.read()
+    differing = 0
+    for output in outputs:
+        text = generate(header_text, output)
+        if check:
+            with open(output, encoding="utf-8") as f:
+                committed = f.read()
+            if committed != text:
+                print(f"generate_bindings: {output} differs from what include/dbs.h gives: run scripts/generate_bindings.py {header} {output}")
+                differing += 1
+            else:
+                print(f"generate_bindings: {output} matches {header}")
+            continue
+        with open(output, "w", encoding="utf-8") as f:
+            f.write(text)
+    return 1 if differing else 0
 
 
 if __name__ == "__main__":

@@ -1,5 +1,6 @@
-! libdbs from Fortran: a height-field cloud and a square boundary built in arrays, options
-! with a progress callback, the parameterization, its patches, and a surface evaluation.
+! libdbs from Fortran (the module dbs, fortran/dbs.f90): a height-field cloud and a square
+! boundary built in arrays, options with a progress callback, the parameterization, its patches
+! (indices from 0, as in the C API), and surface evaluations one at a time and many at once.
 !
 ! usage: dbs_fortran_example [RESULT.csv]   (writes the result when a path is given)
 module example_progress
@@ -45,7 +46,9 @@ program example
   type(c_ptr) :: result = c_null_ptr, patches = c_null_ptr
   type(progress_record), target :: progress
   real(c_double), allocatable :: xyz(:), uv(:), distances(:)
-  real(c_double) :: x, y, mean, max_distance, accuracy, met, rect(4), point(3), normal(3)
+  real(c_double) :: x, y, mean, max_distance, accuracy, met, rect(4), point(3)
+  real(c_double), target :: normal(3)
+  real(c_double) :: points(3, 5), normals(3, 5), su(3, 5), sv(3, 5)
   integer(c_size_t) :: count, i, n_patches, patch_points
   integer(c_int32_t) :: level, is_leaf, nu, nv, iterations
   character(len=512) :: result_path
@@ -108,10 +111,28 @@ program example
     print '(i5, i6, i5, 4f7.3, i4, a, i0, i9, es14.3)', i, level, is_leaf, rect, nu, 'x', nv, patch_points, mean
   end do
 
-  call check(dbs_result_evaluate(result, 0.5d0, 0.5d0, point, normal), 'dbs_result_evaluate')
+  ! A nullable output of the C API takes c_loc(x) or c_null_ptr; the module's wrappers take
+  ! OPTIONAL arguments instead.
+  call check(dbs_result_evaluate(result, 0.5d0, 0.5d0, point, c_loc(normal)), 'dbs_result_evaluate')
   print '(a, 3f9.5, a, 3f9.5)', 'S(0.5,0.5) =', point, '  normal', normal
-  call check(dbs_result_evaluate(result, 0.25d0, 0.75d0, point), 'dbs_result_evaluate without a normal')
+  if (abs(norm2(normal) - 1d0) > 1d-9) error stop 'the normal at (0.5,0.5) is no unit vector'
+  call check(dbs_result_evaluate(result, 0.25d0, 0.75d0, point, c_null_ptr), 'dbs_result_evaluate without a normal')
   print '(a, 3f9.5)', 'S(0.25,0.75) =', point
+
+  ! The first five points' own (u,v), at once, with normals and derivatives: each matches the
+  ! evaluation of its pair alone, and the normal is at right angles to both derivatives.
+  call check(dbs_result_evaluate_points(result, reshape(uv(1:10), [2, 5]), points, normals, su, sv), &
+             'dbs_result_evaluate_points')
+  do i = 1, 5
+    call check(dbs_result_evaluate_point(result, uv(2 * i - 1), uv(2 * i), point, normal), 'dbs_result_evaluate_point')
+    if (any(abs(points(:, i) - point) > 1d-12) .or. any(abs(normals(:, i) - normal) > 1d-12)) &
+      error stop 'dbs_result_evaluate_points differs from dbs_result_evaluate_point'
+    if (abs(dot_product(normal, su(:, i))) > 1d-9 * norm2(su(:, i)) .or. &
+        abs(dot_product(normal, sv(:, i))) > 1d-9 * norm2(sv(:, i))) error stop 'a normal is not normal to dS/du, dS/dv'
+  end do
+  if (dbs_result_evaluate_points(result, reshape(uv(1:10), [2, 5]), points(:, 1:4)) /= DBS_ERR_INVALID_ARGUMENT) &
+    error stop 'dbs_result_evaluate_points took 4 columns for 5 pairs'
+  print '(a)', 'dbs_result_evaluate_points: 5 points, normals and derivatives as one at a time'
 
   if (command_argument_count() >= 1) then
     call get_command_argument(1, result_path)
