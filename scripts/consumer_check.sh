@@ -81,7 +81,8 @@ consume_fortran() {
   cmake -S "$repo/tests/consumer_fortran" -B "$work/cmake-fortran-$name" -DCMAKE_PREFIX_PATH="$prefix" \
     -DCMAKE_BUILD_TYPE=Release -DDBS_REQUIRED_VERSION="$version" >/dev/null
   cmake --build "$work/cmake-fortran-$name" >/dev/null
-  "$work/cmake-fortran-$name/consumer_fortran" >/dev/null
+  # the example's last line: its checks passed (a failed one stops it with a non-zero status)
+  "$work/cmake-fortran-$name/consumer_fortran" | tail -n 1
 
   echo "consumer_check: [$name] gfortran example.f90 \$(pkg-config $static --cflags --libs dbs-fortran)"
   local flags libdir
@@ -91,7 +92,7 @@ consume_fortran() {
   mkdir -p "$work/pkgconfig-fortran-$name"
   # shellcheck disable=SC2086  # the flags are meant to split into words
   (cd "$work/pkgconfig-fortran-$name" && gfortran "$repo/examples/fortran/example.f90" $flags -Wl,-rpath,"$libdir" -o consumer_fortran)
-  "$work/pkgconfig-fortran-$name/consumer_fortran" >/dev/null
+  "$work/pkgconfig-fortran-$name/consumer_fortran" | tail -n 1
 }
 
 mkdir -p "$work"
