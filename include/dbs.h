@@ -322,7 +322,7 @@ typedef struct dbs_options dbs_options;
 #define DBS_OPT_LOSS_SCALE 13       /* double; 0 = derived; >= 0. \since 0.4. Scale a of the loss in cloud units (distances below it count fully); 0: 3 sigma of the cloud's estimated noise (DBS_STAT_NOISE), at least the spacing h (DBS_STAT_LENGTH_SCALE), so a scaled cloud gets a scaled loss. The one used is DBS_STAT_LOSS_SCALE. A scale outside [1e-6, 1e6] times h makes dbs_parameterize fail with DBS_ERR_OUT_OF_RANGE. */
 #define DBS_OPT_CERES_MAX_ITERATIONS 14      /* int; 25; [1, 1000]. \since 0.4. Ceres iterations per solve at most (a curve takes one to four solves, twice that with a loss). */
 #define DBS_OPT_OUTLINE_NEIGHBOURS 16           /* int; 24; [6, 256]. \since 0.4. Nearest points of a neighbourhood in dbs_boundary_detect (dbs_boundary_from_corners uses the default): a point is on the cloud's outline when they leave an angular gap above 120 degrees around it (with the points that count it among theirs). Larger: fewer false outline points inside a sparse or noisy cloud, a coarser outline. */
-#define DBS_OPT_CROP 17                 /* int; 0; [0, 1]. \since 0.4. 1: points outside the boundary (those DBS_STAT_CLAMPED_POINTS counts, judged before the repair) and points far outside the cloud (DBS_STAT_FAR_POINTS) are cropped instead of clamped onto the domain's edge: u, v and distance NaN, patch and level -1, DBS_POINT_CROPPED in dbs_result_point_flags, counted by DBS_STAT_CROPPED_POINTS; the fold measure, the repair, the distance statistics, the validation (dbs_mesh_*, dbs_distortion_create, dbs_distances_create, dbs_report_write) and the result and mesh files leave them out. They still took part in evolving the surfaces. No clamped-points warning then. */
+#define DBS_OPT_CROP 17                 /* int; 0; [0, 1]. \since 0.4. 1: points outside the boundary (those DBS_STAT_CLAMPED_POINTS counts, judged before the repair) and points far outside the cloud (DBS_STAT_FAR_POINTS) are cropped instead of clamped onto the domain's edge: u, v and distance NaN, patch and level -1, DBS_POINT_CROPPED in dbs_result_point_flags, counted by DBS_STAT_CROPPED_POINTS; the fold measure, the repair, the distance statistics, the validation (dbs_mesh_*, dbs_distortion_create, dbs_distances_create, dbs_report_write) and the mesh files and the .drc result leave them out (the .csv and .ply result keep their rows, with nan and -1), and each leaf's figures (dbs_patches_stats, DBS_STAT_ACCURACY_MET) are of the points it kept. They still took part in evolving the surfaces, which bend towards them near the boundary: the kept points' distances are larger than those of a run on the kept points alone (on a saddle whose boundary cuts a 0.6 x 0.6 middle out of it: mean distance 1.3e-3 against 5.3e-5). No clamped-points warning then. */
 #define DBS_OPT_STRICT 18               /* int; 0; [0, 1]. \since 0.4. 1: a gross mismatch of cloud and boundary fails dbs_parameterize with DBS_ERR_DEGENERATE and the warning's message (with its numbers), instead of a warning: the scale ratio (DBS_STAT_SCALE_RATIO) or the boundary's gap (DBS_STAT_BOUNDARY_GAP) before the run, the coverage (DBS_STAT_COVERAGE) or the clamped points (DBS_STAT_CLAMPED_POINTS; not with DBS_OPT_CROP) once every point has its foot. */
 #define DBS_OPT_CERES_FUNCTION_TOLERANCE 15  /* double; 1e-6; [1e-16, 1]. \since 0.4. Ceres stops when an iteration changes the cost by less than this fraction. */
 
@@ -490,17 +490,18 @@ DBS_API void dbs_result_destroy(dbs_result *result);
 /** Number of parameterized points (equals the cloud's count, input order kept).
  *  Returns DBS_ERR_NULL_ARGUMENT. \since 0.1 */
 DBS_API int dbs_result_point_count(const dbs_result *result, size_t *out);
-/** u0 v0 u1 v1 ... into `out_uv`, which holds `capacity` pairs; each in [0,1].
+/** u0 v0 u1 v1 ... into `out_uv`, which holds `capacity` pairs; each in [0,1] (NaN for a
+ *  cropped point, DBS_OPT_CROP).
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_result_uv(const dbs_result *result, double *out_uv, size_t capacity);
-/** Distance of each point to the base surface (>= 0, cloud units); `capacity` in values.
+/** Distance of each point to the base surface (>= 0, cloud units; NaN for a cropped point); `capacity` in values.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_result_distances(const dbs_result *result, double *out, size_t capacity);
 /** Id of the leaf patch that parameterized each point (an index for dbs_patches_* on the
- *  view of dbs_result_patches); `capacity` in values.
+ *  view of dbs_result_patches; -1 for a cropped point); `capacity` in values.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_result_point_patches(const dbs_result *result, int32_t *out, size_t capacity);
-/** Quadtree level of that leaf for each point (0 = the root); `capacity` in values.
+/** Quadtree level of that leaf for each point (0 = the root; -1 for a cropped point); `capacity` in values.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_result_point_levels(const dbs_result *result, int32_t *out, size_t capacity);
 /** 1 for each point whose (u,v) the last-resort repair gave (DBS_OPT_REPAIR), else 0; all 0
@@ -526,7 +527,7 @@ DBS_API int dbs_result_point_flags(const dbs_result *result, int32_t *out, size_
 DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, double *out_xyz, double *out_normal);
 
 /* Summary statistics (pinned ids; \since 0.1) for dbs_result_stat, each with its unit. */
-#define DBS_STAT_MEAN_DISTANCE 0 /* mean point-to-surface distance over all points, cloud units */
+#define DBS_STAT_MEAN_DISTANCE 0 /* mean point-to-surface distance over all points (since 0.4: but those far outside the cloud, DBS_STAT_FAR_POINTS, and cropped ones), cloud units */
 #define DBS_STAT_MAX_DISTANCE 1  /* largest point-to-surface distance, cloud units */
 #define DBS_STAT_RMS_DISTANCE 2  /* root mean square of the point-to-surface distances, cloud units */
 #define DBS_STAT_ACCURACY 3      /* the mean-distance target that was used, in cloud units: the requested one, raised to the noise floor when DBS_OPT_NOISE_FLOOR is 1 (since 0.3) */
@@ -656,7 +657,8 @@ typedef struct dbs_mesh dbs_mesh;
 #define DBS_MESH_SUSPICIOUS_FACTOR 4.0 /* \since 0.1 */
 
 /** Triangulates the result's (u,v) in the plane (2D Delaunay, Qhull) and takes the triangles
- *  over `cloud`, the cloud that was parameterized: vertex i is cloud point i. Triangles are
+ *  over `cloud`, the cloud that was parameterized: vertex i is cloud point i (a cropped point,
+ *  DBS_OPT_CROP, is the vertex of no triangle and its (u,v) is NaN). Triangles are
  *  counter-clockwise in (u,v); a point whose (u,v) coincides with another's is the vertex of
  *  no triangle. DBS_ERR_INVALID_ARGUMENT when the cloud's size differs from the result's,
  *  DBS_ERR_DEGENERATE when the (u,v) do not span the plane. Uses all hardware threads.
@@ -687,8 +689,9 @@ DBS_API int dbs_mesh_suspicious_count(const dbs_mesh *mesh, size_t *out);
 DBS_API int dbs_mesh_suspicious(const dbs_mesh *mesh, int32_t *out, size_t capacity);
 /** Writes the mesh by extension: .obj with vt = (u,v), plus STEM.mtl and the disk texture
  *  STEM_texture.png beside it (so any viewer shows method (c)); or binary .ply with float
- *  x y z u v per vertex. Other extensions are DBS_ERR_UNSUPPORTED. Existing files are
- *  replaced; see docs/FORMATS.md.
+ *  x y z u v per vertex. Cropped points (NaN (u,v)) are not written and the later vertices
+ *  are numbered on, so a file's vertex k is cloud point k only without cropping. Other
+ *  extensions are DBS_ERR_UNSUPPORTED. Existing files are replaced; see docs/FORMATS.md.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_UNSUPPORTED (another extension; .obj without
  *  DBS_FEATURE_REPORT), DBS_ERR_IO (cannot create or write a file), DBS_ERR_NO_MEMORY.
  *  \since 0.1 */

@@ -16,7 +16,6 @@ void write_csv(const Result& result, const std::string& path) {
   file.write("index,u,v,distance,patch,level\n");
   std::string row;
   for (std::size_t i = 0; i < result.u.size(); ++i) {
-    if (result.is_cropped(i)) continue;  // the index column keeps the rows' input order
     row.clear();
     append_integer(row, static_cast<long long>(i));
     row += ',';
@@ -53,12 +52,11 @@ void append_float(std::string& out, double x) {
 // normals, colors, texture coordinates), not custom properties such as distance and patch.
 void write_ply(const Result& result, const PointCloud& cloud, const std::string& path) {
   OutputFile file(path);
-  file.write("ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(cloud.size() - result.cropped_points) +
+  file.write("ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(cloud.size()) +
              "\nproperty float x\nproperty float y\nproperty float z\nproperty float u\nproperty float v\n"
              "property float distance\nproperty int patch\nend_header\n");
   std::string row;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    if (result.is_cropped(i)) continue;
     row.clear();
     const Vec3& p = cloud.points()[i];
     for (const double x : {p.x(), p.y(), p.z(), result.u[i], result.v[i], result.distance[i]}) append_float(row, x);

@@ -1,7 +1,8 @@
 // Writing parameterization results (FORMATS.md): .csv, .ply (binary little-endian, with
 // float u, v, distance and int patch properties) and .drc (Draco, POSITION + TEX_COORD).
-// Cropped points (Result::cropped) have no row: the .csv's index column still names each
-// row's point, the .ply and .drc list the other points in input order.
+// Cropped points (Result::cropped) keep their rows in .csv and .ply, with NaN u, v and
+// distance and patch (and level) -1; the .drc, whose quantized texture coordinates hold no
+// NaN, lists the other points in input order.
 #pragma once
 #include <string>
 

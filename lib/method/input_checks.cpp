@@ -40,7 +40,8 @@ void check_boundary_against_cloud(const CloudIndex& index, const Boundary& bound
       const std::size_t j = index.nearest(p);
       const double local = local_spacing(index, j, ids, d2);
       // Where the points coincide (no spacing), the typical one.
-      const double unit = local > 0.0 && median > 0.0 ? h * local / median : h;
+      const double ratio = local > 0.0 && median > 0.0 ? std::clamp(local / median, 1.0 / input::kMaxSpacingRatio, input::kMaxSpacingRatio) : 1.0;
+      const double unit = h * ratio;
       gaps.push_back((index.points()[j] - p).norm() / unit);
     }
   }

@@ -23,6 +23,7 @@ constexpr double kMaxGap = 10.0;            ///< beyond this many point spacings
 constexpr double kMaxSideGap = 4.0;         ///< beyond this many: sides cutting across the surface (the controls stay below 1.6)
 constexpr std::size_t kSpacingNeighbour = 6;    ///< a point's local spacing: the distance to its 6th nearest point
 constexpr std::size_t kSpacingSample = 1024;    ///< the typical local spacing: the median of this many points'
+constexpr double kMaxSpacingRatio = 4.0;        ///< a local spacing counts as at most this x the typical one (and at least its inverse): a fringe of stray points near the boundary does not hide its gap
 constexpr double kMaxScaleRatio = 10.0;     ///< warn when the cloud's size / the boundary's is beyond this or below its inverse
 constexpr std::size_t kPointsPerCell = 16;  ///< coverage grid: about this many points per cell on average
 constexpr double kMinCoverage = 0.75;       ///< warn below this share of [0,1]^2 covered

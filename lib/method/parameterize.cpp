@@ -527,7 +527,8 @@ class Driver {
       if (body_.far[i]) farthest = std::max(farthest, (points_[i] - centre).stableNorm());
     return std::to_string(result_.far_points) + " point(s) lie far outside the cloud (beyond " + format_number(kFarOutside) +
            " times its extent; the farthest " + significant_text(farthest, 3) +
-           " from the boundary's centre): left out of the target, the spacing, the surfaces and the distance statistics, each takes the (u,v) of its nearest point";
+           " from the boundary's centre): left out of the target, the spacing, the surfaces and the distance statistics, " +
+           (options_.crop ? "and cropped" : "each takes the (u,v) of its nearest point");
   }
 
   /// The points to crop (Options::crop): those outside the boundary and those far outside
@@ -545,6 +546,26 @@ class Driver {
       if (!result_.cropped[i]) kept_.push_back(i);
     if (kept_.empty())
       fail(ErrorCode::Degenerate, "all " + std::to_string(n) + " points lie outside the boundary (more than a point spacing from the surface at the domain's edge) and were cropped: is it the boundary of this cloud?");
+    if (result_.cropped_points > 0) judge_leaves_on_kept_points();
+  }
+
+  /// Each leaf judged again on the kept points it parameterizes: its figures, and whether it
+  /// (and the run) met the target, are not those of points it has no (u,v) for. A leaf left
+  /// with none has nothing to miss.
+  void judge_leaves_on_kept_points() {
+    std::vector<std::vector<double>> distances(result_.patches.size());
+    for (std::size_t i : kept_)
+      if (result_.patch[i] >= 0) distances[static_cast<std::size_t>(result_.patch[i])].push_back(result_.distance[i]);
+    for (Patch& leaf : result_.patches) {
+      if (!leaf.is_leaf()) continue;
+      const std::vector<double>& own = distances[static_cast<std::size_t>(leaf.id)];
+      if (own.empty()) {
+        leaf.mean_distance = leaf.max_distance = leaf.error = 0.0;
+        leaf.accurate = true;
+      } else {
+        judge_leaf(leaf, own);
+      }
+    }
   }
 
   /// Cropped points lose their (u,v), distance, patch and level.

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "bitmap_font.hpp"
+#include "cloud_body.hpp"
 #include "error.hpp"
 #include "json_writer.hpp"
 #include "outline.hpp"
@@ -50,8 +51,12 @@ class View {
     return {left_ + 0.5 * kBoundaryViewSize + q.x(), 0.5 * kBoundaryViewSize - q.y()};
   }
 
+  /// Within reach of the picture (and finite): its pixel coordinates fit an int.
+  static bool on_canvas(const Vec2& p) { return std::abs(p.x()) < 1e5 && std::abs(p.y()) < 1e5; }
+
   void dot(RgbImage& image, const Vec3& p, Rgb colour, int radius) const {
     const Vec2 c = pixel(p);
+    if (!on_canvas(c)) return;
     for (int dy = -radius; dy <= radius; ++dy)
       for (int dx = -radius; dx <= radius; ++dx) image.plot(static_cast<int>(std::lround(c.x())) + dx, static_cast<int>(std::lround(c.y())) + dy, colour);
   }
@@ -65,6 +70,7 @@ class View {
   Vec2 coordinates(const Vec3& p) const { return {(p - frame_.origin).dot(frame_.e1), (p - frame_.origin).dot(across_)}; }
 
   static void segment(RgbImage& image, const Vec2& a, const Vec2& b, Rgb colour) {
+    if (!on_canvas(a) || !on_canvas(b)) return;
     const int steps = std::max(1, static_cast<int>(std::ceil((b - a).lpNorm<Eigen::Infinity>())));
     for (int s = 0; s <= steps; ++s) {
       const Vec2 p = a + (b - a) * (static_cast<double>(s) / steps);
@@ -89,6 +95,7 @@ void draw_view(RgbImage& image, const View& view, const std::vector<Vec3>& point
     const Vec3 corner = corner_of(boundary, c);
     view.dot(image, corner, kBlack, 3);
     const Vec2 at = view.pixel(corner);
+    if (!View::on_canvas(at)) continue;
     draw_text(image, static_cast<int>(at.x()) + 6, static_cast<int>(at.y()) - 12, kCornerNames[static_cast<std::size_t>(c)], kBlack);
   }
   draw_text(image, left + 6, 6, title, kBlack);
@@ -96,8 +103,13 @@ void draw_view(RgbImage& image, const View& view, const std::vector<Vec3>& point
 
 }  // namespace
 
-RgbImage draw_boundary_picture(const std::vector<Vec3>& points, const Boundary& boundary, const std::vector<std::vector<Vec3>>& holes) {
-  if (points.empty()) fail(ErrorCode::InvalidArgument, "the boundary's picture needs the cloud's points: the cloud is empty");
+RgbImage draw_boundary_picture(const std::vector<Vec3>& all_points, const Boundary& boundary, const std::vector<std::vector<Vec3>>& holes) {
+  if (all_points.empty()) fail(ErrorCode::InvalidArgument, "the boundary's picture needs the cloud's points: the cloud is empty");
+  // Framed on the cloud's body: one glitch 1e6 away must not shrink the scan to a pixel.
+  const CloudBody body = cloud_body(all_points, boundary);
+  std::vector<Vec3> points;
+  points.reserve(body.body.size());
+  for (std::size_t i : body.body) points.push_back(all_points[i]);
   const PlaneFrame frame = principal_plane(points);
   const Vec3 normal = frame.e1.cross(frame.e2).normalized();
   std::vector<Vec3> everything = points;
@@ -118,7 +130,8 @@ RgbImage draw_boundary_picture(const std::vector<Vec3>& points, const Boundary& 
     draw_text(image, x, y, name, kSideColours[static_cast<std::size_t>(s)], 2);
     x += text_width(name, 2) + 24;
   }
-  const std::string rest = std::to_string(holes.size()) + (holes.size() == 1 ? " hole" : " holes") + ", " + std::to_string(points.size()) + " points";
+  std::string rest = std::to_string(holes.size()) + (holes.size() == 1 ? " hole" : " holes") + ", " + std::to_string(points.size()) + " points";
+  if (points.size() < all_points.size()) rest += " (" + std::to_string(all_points.size() - points.size()) + " far outside not drawn)";
   draw_text(image, x, y, rest, holes.empty() ? kBlack : kHoleMagenta, 2);
   return image;
 }

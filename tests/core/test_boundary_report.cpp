@@ -69,6 +69,15 @@ void shows_sides_corners_and_holes(void**) {
   assert_true(back.bytes() == image.bytes());
   assert_true(std::filesystem::file_size(dir + "/boundary.json") > 100);
   std::filesystem::remove_all(dir);
+  // A glitch far outside the scan (1e6, then 1e200 away) is left out of the framing: the
+  // scan still fills its views, and the legend says what was not drawn.
+  for (double far : {1e6, 1e200}) {
+    std::vector<Vec3> glitched = points;
+    glitched.emplace_back(far, 0.0, 0.0);
+    const dbs::RgbImage framed = dbs::draw_boundary_picture(glitched, found.boundary, found.holes);
+    const std::map<dbs::Rgb, int> seen = colours(framed, 0, dbs::kBoundaryViewSize);
+    assert_true(seen.count(grey) && std::abs(seen.at(grey) - above.at(grey)) < above.at(grey) / 10);
+  }
   // No points: refused with a message.
   bool refused = false;
   try {

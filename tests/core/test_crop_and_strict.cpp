@@ -142,6 +142,23 @@ void cropped_points_lose_their_parameters_and_the_others_keep_theirs(void**) {
   for (const std::string& w : clamped.warnings) warned = warned || w.find("clamped onto the domain's edge") != std::string::npos;
   assert_true(warned);
 
+  // Each leaf is judged on its kept points only (not on points it gives no (u,v)).
+  std::vector<double> sum_of(cropped.result.patches.size(), 0.0), max_of(cropped.result.patches.size(), 0.0);
+  std::vector<std::size_t> count_of(cropped.result.patches.size(), 0);
+  for (std::size_t i = 0; i < s.count(); ++i) {
+    if (cropped.result.is_cropped(i)) continue;
+    const std::size_t id = static_cast<std::size_t>(cropped.result.patch[i]);
+    sum_of[id] += cropped.result.distance[i];
+    max_of[id] = std::max(max_of[id], cropped.result.distance[i]);
+    ++count_of[id];
+  }
+  for (const dbs::Patch& leaf : cropped.result.patches) {
+    if (!leaf.is_leaf()) continue;
+    const std::size_t id = static_cast<std::size_t>(leaf.id);
+    const double mean = count_of[id] ? sum_of[id] / static_cast<double>(count_of[id]) : 0.0;
+    assert_true(std::abs(leaf.mean_distance - mean) <= 1e-12 * std::max(mean, 1e-300) && leaf.max_distance == max_of[id]);
+  }
+
   // With the repair (the default) cropped points are neither repaired nor fitted: the kept
   // points' mean distance is that of points inside the boundary.
   const Run repaired = run(points, boundary, 1, 0, 1);
@@ -182,7 +199,7 @@ void the_validation_and_the_files_leave_cropped_points_out(void**) {
   assert_true(with_cropped.summary.conformal.p95 == whole.summary.conformal.p95);
   assert_int_equal(with_cropped.summary.folded, whole.summary.folded);
 
-  // Files: a row per kept point (the .csv keeps its index), mesh vertices renumbered.
+  // Files: a row per point (a cropped one with nan and -1), mesh vertices renumbered.
   const std::string csv = "test_crop_result.csv", ply = "test_crop_mesh.ply";
   dbs::save_result(r.result, cloud, csv);
   std::ifstream in(csv);
@@ -190,12 +207,13 @@ void the_validation_and_the_files_leave_cropped_points_out(void**) {
   std::getline(in, line);
   std::size_t rows = 0;
   while (std::getline(in, line)) {
-    const std::size_t index = std::stoul(line.substr(0, line.find(',')));
-    assert_false(r.result.is_cropped(index));
-    assert_true(line.find("nan") == std::string::npos);
+    // every point has its row, in input order; a cropped one with nan and -1
+    assert_int_equal(std::stoul(line.substr(0, line.find(','))), rows);
+    const bool none = line.find(",nan,nan,nan,-1,-1") != std::string::npos;
+    assert_true(none == r.result.is_cropped(rows));
     ++rows;
   }
-  assert_int_equal(rows, kept);
+  assert_int_equal(rows, s.count());
   dbs::write_ply_mesh(ply, points, r.result.u, r.result.v, mesh.triangles);
   std::ifstream mesh_in(ply, std::ios::binary);
   std::stringstream header;
@@ -219,6 +237,14 @@ void strict_turns_each_gross_mismatch_into_an_error(void**) {
   message = failure(points, square_boundary(s, kInner0, kInner1), 0, 1, dbs::ErrorCode::Degenerate);
   assert_true(message.find("strict input checks: ") == 0);
   assert_true(message.find("points lie outside the boundary by more than a point spacing and were clamped onto the domain's edge") != std::string::npos);
+  // A cloud with a wide hole in its middle: its edges follow the boundary (no gap), but the
+  // points cover under 3/4 of the domain.
+  std::vector<Vec3> holed;
+  for (std::size_t i = 0; i < s.count(); ++i)
+    if (std::hypot(s.uv_true[2 * i] - 0.5, s.uv_true[2 * i + 1] - 0.5) > 0.45) holed.push_back(points[i]);
+  message = failure(holed, square_boundary(s, 0.0, 1.0), 0, 1, dbs::ErrorCode::Degenerate);
+  assert_true(message.find("strict input checks: the points cover ") == 0);
+  assert_true(message.find("% of the domain [0,1]^2: the cloud covers only part of the boundary") != std::string::npos);
   // A cloud covering half of its boundary.
   std::vector<Vec3> half;
   for (std::size_t i = 0; i < s.count(); ++i)
