@@ -234,10 +234,17 @@ typedef struct dbs_boundary dbs_boundary;
 /** Four polylines (each >= 2 finite points) with the corner conventions above.
  *  Corners may miss each other by at most 1e-6 of the boundary's bounding-box diagonal;
  *  they are then made to coincide exactly. Larger misses, zero-length sides and a
- *  boundary of zero area are DBS_ERR_DEGENERATE.
+ *  boundary of zero area are DBS_ERR_DEGENERATE. Since 0.4 so is a boundary whose own shape
+ *  bounds no patch: a side folding back on itself (its direction over 5% of its length
+ *  turning by more than 160 degrees) or the loop of the four sides crossing itself (seen
+ *  along the normal of its best-fit plane, with the crossing strands less than 1% of the
+ *  boundary's size apart; a curl shorter than 5% of the loop is tolerated): a bow-tie, a side
+ *  running across the patch, a side crossing itself. The message names the side(s), the
+ *  points and where (docs/FORMATS.md).
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (a side with fewer than 2
  *  points), DBS_ERR_NON_FINITE, DBS_ERR_DEGENERATE (corners apart, a side of zero length or
- *  shorter than the corner tolerance, all points coincident, (almost) no area),
+ *  shorter than the corner tolerance, all points coincident, (almost) no area; since 0.4 a
+ *  side folding back, the loop crossing itself),
  *  DBS_ERR_OUT_OF_RANGE (coordinates so large that the boundary's size overflows),
  *  DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_boundary_create(const double *bottom, size_t n_bottom, const double *right, size_t n_right, const double *top, size_t n_top, const double *left, size_t n_left, dbs_boundary **out);
