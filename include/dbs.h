@@ -561,7 +561,8 @@ DBS_API int dbs_result_stat(const dbs_result *result, int32_t stat, double *out)
 DBS_API int dbs_result_patches(const dbs_result *result, const dbs_patches **out);
 
 /** Writes .csv, .ply or .drc (the extension, in any case, decides; docs/FORMATS.md).
- *  `cloud` is the cloud that was parameterized (its points are written in .ply and .drc).
+ *  `cloud` is the cloud that was parameterized (its points are written in .ply and .drc;
+ *  since 0.4 the .ply holds doubles, so its points read back bit for bit).
  *  An existing file is replaced. .drc needs DBS_FEATURE_DRACO.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (the cloud's point count differs
  *  from the result's), DBS_ERR_UNSUPPORTED (an unknown extension; .drc without Draco),
@@ -668,8 +669,8 @@ DBS_API int dbs_mesh_suspicious_count(const dbs_mesh *mesh, size_t *out);
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_mesh_suspicious(const dbs_mesh *mesh, int32_t *out, size_t capacity);
 /** Writes the mesh by extension: .obj with vt = (u,v), plus STEM.mtl and the disk texture
- *  STEM_texture.png beside it (so any viewer shows method (c)); or binary .ply with float
- *  x y z u v per vertex. Other extensions are DBS_ERR_UNSUPPORTED. Existing files are
+ *  STEM_texture.png beside it (so any viewer shows method (c)); or binary .ply with double
+ *  x y z u v per vertex (since 0.4; float before). Other extensions are DBS_ERR_UNSUPPORTED. Existing files are
  *  replaced; see docs/FORMATS.md.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_UNSUPPORTED (another extension; .obj without
  *  DBS_FEATURE_REPORT), DBS_ERR_IO (cannot create or write a file), DBS_ERR_NO_MEMORY.
