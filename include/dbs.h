@@ -210,6 +210,18 @@ DBS_API int dbs_cloud_create(const double *xyz, size_t count, dbs_cloud **out);
  *  points), DBS_ERR_UNSUPPORTED (an unknown extension; .drc without Draco;
  *  a PLY version other than 1.0), DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_cloud_load(const char *path, dbs_cloud **out);
+/** dbs_cloud_load with progress and cancellation, for big files: the progress callback of
+ *  `options` (dbs_options_set_progress; the other options are not read; NULL options: no
+ *  callback) is called on the calling thread with the stages "read" (the bytes read from
+ *  the file, fractions 0 to 0.5), "parse" (the bytes parsed, 0.5 to 1; .xyz/.txt, .ply, .obj)
+ *  or, for .drc, "decode" (0 before Draco decodes the file, nothing during it), and last
+ *  "done" with exactly 1.0. Each stage reports when it begins and then after every 4 MiB;
+ *  fractions rise monotonically. A callback returning non-zero cancels the load:
+ *  DBS_ERR_CANCELLED, *out untouched, nothing left allocated.
+ *  (`struct dbs_options` is the dbs_options handle of the options section below.)
+ *  Returns as dbs_cloud_load, and DBS_ERR_CANCELLED. \since 0.4 */
+struct dbs_options;
+DBS_API int dbs_cloud_load_with_options(const char *path, const struct dbs_options *options, dbs_cloud **out);
 /** Frees the cloud; NULL is ignored. Not while another call uses it. \since 0.1 */
 DBS_API void dbs_cloud_destroy(dbs_cloud *cloud);
 /** Number of points. Returns DBS_ERR_NULL_ARGUMENT. \since 0.1 */

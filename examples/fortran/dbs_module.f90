@@ -116,6 +116,13 @@ module dbs
       type(c_ptr), intent(out) :: out
       integer(c_int) :: dbs_cloud_load
     end function
+    function dbs_cloud_load_with_options(path, options, out) bind(C, name="dbs_cloud_load_with_options")
+      import :: c_int, c_char, c_ptr
+      character(kind=c_char), intent(in) :: path(*)
+      type(c_ptr), value :: options
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: dbs_cloud_load_with_options
+    end function
     subroutine dbs_cloud_destroy(cloud) bind(C, name="dbs_cloud_destroy")
       import :: c_ptr
       type(c_ptr), value :: cloud

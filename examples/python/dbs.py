@@ -178,6 +178,7 @@ PROTOTYPES = {
     "dbs_last_error_message": (_str, []),
     "dbs_cloud_create": (_int, [_P(_dbl), _size, _P(_ptr)]),
     "dbs_cloud_load": (_int, [_str, _P(_ptr)]),
+    "dbs_cloud_load_with_options": (_int, [_str, _ptr, _P(_ptr)]),
     "dbs_cloud_destroy": (None, [_ptr]),
     "dbs_cloud_count": (_int, [_ptr, _P(_size)]),
     "dbs_cloud_bounds": (_int, [_ptr, _P(_dbl), _P(_dbl)]),
@@ -340,9 +341,14 @@ class Cloud(_Handle):
         return cls(handle)
 
     @classmethod
-    def load(cls, path):
+    def load(cls, path, options=None):
+        """The cloud of a file; with `options`, their progress callback (Options.on_progress)
+        follows the load and may cancel it (dbs_cloud_load_with_options)."""
         handle = _ptr()
-        _check(lib.dbs_cloud_load(os.fsencode(path), ctypes.byref(handle)))
+        if options is None:
+            _check(lib.dbs_cloud_load(os.fsencode(path), ctypes.byref(handle)))
+        else:
+            _check(lib.dbs_cloud_load_with_options(os.fsencode(path), options._handle, ctypes.byref(handle)))
         return cls(handle)
 
     def __len__(self):
