@@ -13,6 +13,20 @@
 
 #include "capi_support.h"
 
+/* AddressSanitizer stops the process at an allocation no memory can hold, where libdbs
+ * otherwise turns std::bad_alloc into DBS_ERR_NO_MEMORY: under it, the row that asks for one
+ * is skipped (and the document, checked by the plain build, is not compared). */
+#if defined(__SANITIZE_ADDRESS__)
+#define UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define UNDER_ASAN 1
+#endif
+#endif
+#ifndef UNDER_ASAN
+#define UNDER_ASAN 0
+#endif
+
 #define DIR DBS_TEST_TMP_DIR "/bad_inputs"
 #define DOC DBS_TEST_DATA_DIR "/../docs/bad_inputs.md"
 
@@ -427,6 +441,7 @@ static void run_rows(char *table, size_t size) {
   snprintf(table, size, "| # | input | call | status | message (excerpt) |\n|---|-------|------|--------|-------------------|\n");
   for (size_t k = 0; k < ROWS; ++k) {
     const row *r = &rows[k];
+    if (UNDER_ASAN && r->run == v_tri_memory) continue;
     const int expected = r->needs_validation && (!validation || (r->run == v_report && !report)) ? DBS_ERR_UNSUPPORTED : r->status;
     dbs_last_error_message(); /* a successful row leaves the last message: cleared below */
     const int status = r->run();
@@ -457,7 +472,7 @@ static void every_row_gives_its_status(void **state) {
 /* docs/bad_inputs.md holds the generated table between its two marker lines. */
 static void the_document_shows_the_table(void **state) {
   (void)state;
-  if (!has(DBS_FEATURE_VALIDATION) || !has(DBS_FEATURE_REPORT)) skip();
+  if (!has(DBS_FEATURE_VALIDATION) || !has(DBS_FEATURE_REPORT) || UNDER_ASAN) skip();
   if (!table[0]) run_rows(table, sizeof table);
   char *doc = read_all(DOC, NULL);
   const char *begin = strstr(doc, "<!-- table: begin -->\n"), *end = strstr(doc, "<!-- table: end -->");
