@@ -4,6 +4,8 @@
 #include "arrays.hpp"
 #include "cloud_io.hpp"
 #include "firewall.hpp"
+#include "handles.hpp"
+#include "load_progress.hpp"
 
 using namespace dbs::capi;
 
@@ -20,6 +22,21 @@ int dbs_cloud_load(const char* path, dbs_cloud** out) {
     require_non_null(path, "path");
     require_non_null(out, "out");
     *out = new dbs_cloud{dbs::load_cloud(path)};
+  });
+}
+
+int dbs_cloud_load_with_options(const char* path, const dbs_options* options, dbs_cloud** out) {
+  return guarded(__func__, [&] {
+    require_non_null(path, "path");
+    require_non_null(out, "out");
+    dbs::ProgressFn report;
+    if (options && options->progress) {
+      const dbs_progress_fn progress = options->progress;
+      void* payload = options->progress_payload;
+      report = [progress, payload](double fraction, const char* stage) { return progress(fraction, stage, payload) != 0; };
+    }
+    dbs::LoadProgress load_progress(std::move(report));
+    *out = new dbs_cloud{dbs::load_cloud(path, load_progress)};
   });
 }
 

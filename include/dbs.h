@@ -214,6 +214,18 @@ DBS_API int dbs_cloud_create(const double *xyz, size_t count, dbs_cloud **out);
  *  points), DBS_ERR_UNSUPPORTED (an unknown extension; .drc without Draco;
  *  a PLY version other than 1.0), DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_cloud_load(const char *path, dbs_cloud **out);
+/** dbs_cloud_load with progress and cancellation, for big files: the progress callback of
+ *  `options` (dbs_options_set_progress; the other options are not read; NULL options: no
+ *  callback) is called on the calling thread with the stages "read" (the bytes read from
+ *  the file, fractions 0 to 0.5), "parse" (the bytes parsed, 0.5 to 1; .xyz/.txt, .ply, .obj)
+ *  or, for .drc, "decode" (0 before Draco decodes the file, nothing during it), and last
+ *  "done" with exactly 1.0. Each stage reports when it begins and then after every 4 MiB;
+ *  fractions rise monotonically. A callback returning non-zero cancels the load:
+ *  DBS_ERR_CANCELLED, *out untouched, nothing left allocated.
+ *  (`struct dbs_options` is the dbs_options handle of the options section below.)
+ *  Returns as dbs_cloud_load, and DBS_ERR_CANCELLED. \since 0.4 */
+struct dbs_options;
+DBS_API int dbs_cloud_load_with_options(const char *path, const struct dbs_options *options, dbs_cloud **out);
 /** Frees the cloud; NULL is ignored. Not while another call uses it. \since 0.1 */
 DBS_API void dbs_cloud_destroy(dbs_cloud *cloud);
 /** Number of points. Returns DBS_ERR_NULL_ARGUMENT. \since 0.1 */
@@ -238,10 +250,17 @@ typedef struct dbs_boundary dbs_boundary;
 /** Four polylines (each >= 2 finite points) with the corner conventions above.
  *  Corners may miss each other by at most 1e-6 of the boundary's bounding-box diagonal;
  *  they are then made to coincide exactly. Larger misses, zero-length sides and a
- *  boundary of zero area are DBS_ERR_DEGENERATE.
+ *  boundary of zero area are DBS_ERR_DEGENERATE. Since 0.4 so is a boundary whose own shape
+ *  bounds no patch: a side folding back on itself (its direction over 5% of its length
+ *  turning by more than 160 degrees) or the loop of the four sides crossing itself (seen
+ *  along the normal of its best-fit plane, with the crossing strands less than 1% of the
+ *  boundary's size apart; a curl shorter than 5% of the loop is tolerated): a bow-tie, a side
+ *  running across the patch, a side crossing itself. The message names the side(s), the
+ *  points and where (docs/FORMATS.md).
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (a side with fewer than 2
  *  points), DBS_ERR_NON_FINITE, DBS_ERR_DEGENERATE (corners apart, a side of zero length or
- *  shorter than the corner tolerance, all points coincident, (almost) no area),
+ *  shorter than the corner tolerance, all points coincident, (almost) no area; since 0.4 a
+ *  side folding back, the loop crossing itself),
  *  DBS_ERR_OUT_OF_RANGE (coordinates so large that the boundary's size overflows),
  *  DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_boundary_create(const double *bottom, size_t n_bottom, const double *right, size_t n_right, const double *top, size_t n_top, const double *left, size_t n_left, dbs_boundary **out);
@@ -580,7 +599,8 @@ DBS_API int dbs_result_evaluate_many(const dbs_result *result, const double *uv,
 DBS_API int dbs_result_patches(const dbs_result *result, const dbs_patches **out);
 
 /** Writes .csv, .ply or .drc (the extension, in any case, decides; docs/FORMATS.md).
- *  `cloud` is the cloud that was parameterized (its points are written in .ply and .drc).
+ *  `cloud` is the cloud that was parameterized (its points are written in .ply and .drc;
+ *  since 0.4 the .ply holds doubles, so its points read back bit for bit).
  *  An existing file is replaced. .drc needs DBS_FEATURE_DRACO.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_INVALID_ARGUMENT (the cloud's point count differs
  *  from the result's), DBS_ERR_UNSUPPORTED (an unknown extension; .drc without Draco),
@@ -688,10 +708,11 @@ DBS_API int dbs_mesh_suspicious_count(const dbs_mesh *mesh, size_t *out);
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.1 */
 DBS_API int dbs_mesh_suspicious(const dbs_mesh *mesh, int32_t *out, size_t capacity);
 /** Writes the mesh by extension: .obj with vt = (u,v), plus STEM.mtl and the disk texture
- *  STEM_texture.png beside it (so any viewer shows method (c)); or binary .ply with float
- *  x y z u v per vertex. Cropped points (NaN (u,v)) are not written and the later vertices
- *  are numbered on, so a file's vertex k is cloud point k only without cropping. Other
- *  extensions are DBS_ERR_UNSUPPORTED. Existing files are replaced; see docs/FORMATS.md.
+ *  STEM_texture.png beside it (so any viewer shows method (c)); or binary .ply with double
+ *  x y z u v per vertex (since 0.4; float before). Cropped points (NaN (u,v)) are not written
+ *  and the later vertices are numbered on, so a file's vertex k is cloud point k only without
+ *  cropping. Other extensions are DBS_ERR_UNSUPPORTED. Existing files are replaced; see
+ *  docs/FORMATS.md.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_UNSUPPORTED (another extension; .obj without
  *  DBS_FEATURE_REPORT), DBS_ERR_IO (cannot create or write a file), DBS_ERR_NO_MEMORY.
  *  \since 0.1 */

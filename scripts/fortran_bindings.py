@@ -45,11 +45,12 @@ LINE = 100  # longest line written (free form allows 132)
 
 
 def split_parameter(parameter):
-    """'const double *xyz' -> ('const double *', 'xyz')."""
+    """'const double *xyz' -> ('const double *', 'xyz'); a `struct` tag is dropped (the header
+    names a struct before its typedef as `struct dbs_options`). Shared by both outputs."""
     match = re.fullmatch(r"(.*?)(\w+)", parameter.strip())
     if not match:
         raise SystemExit(f"generate_bindings: cannot read parameter '{parameter}'")
-    return re.sub(r"\s+", " ", match.group(1).strip()), match.group(2)
+    return re.sub(r"\bstruct\s+", "", re.sub(r"\s+", " ", match.group(1).strip())), match.group(2)
 
 
 def parameters_of(text):

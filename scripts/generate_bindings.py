@@ -46,14 +46,6 @@ def ctype_of(c_type, callbacks):
     raise SystemExit(f"generate_bindings: no ctypes type for C type '{c_type}'")
 
 
-def split_parameter(parameter):
-    """'const double *xyz' -> ('const double *', 'xyz')."""
-    match = re.fullmatch(r"(.*?)(\w+)", parameter.strip())
-    if not match:
-        raise SystemExit(f"generate_bindings: cannot read parameter '{parameter}'")
-    return match.group(1).strip(), match.group(2)
-
-
 def read_header(text):
     constants = re.findall(r"^#define\s+DBS_(\w+)\s+(-?[0-9][0-9.eE+-]*)\b", text, re.MULTILINE)
     # an option's type opens the comment beside it: "/* int; ..." or "/* double; ..."
@@ -62,7 +54,7 @@ def read_header(text):
     for ret, name, params in re.findall(r"^typedef\s+(.*?)\(\*\s*(dbs_\w+_fn)\)\((.*)\);", text, re.MULTILINE):
         python_name = name[len("dbs_"):].upper()
         restype = "None" if ret.strip() == "void" else ctype_of(ret, {})
-        argtypes = [ctype_of(split_parameter(p)[0], {}) for p in params.split(",")]
+        argtypes = [ctype_of(fortran_bindings.split_parameter(p)[0], {}) for p in params.split(",")]
         callbacks[name] = (python_name, restype, argtypes)
     functions = []
     for line in text.splitlines():
@@ -72,8 +64,8 @@ def read_header(text):
         ret, name, params = match.groups()
         restype = "None" if ret.strip() == "void" else ctype_of(ret, callbacks)
         params = params.strip()
-        argtypes = [] if params in ("", "void") else [ctype_of(split_parameter(p)[0], callbacks) for p in params.split(",")]
-        names = [] if params in ("", "void") else [split_parameter(p)[1] for p in params.split(",")]
+        argtypes = [] if params in ("", "void") else [ctype_of(fortran_bindings.split_parameter(p)[0], callbacks) for p in params.split(",")]
+        names = [] if params in ("", "void") else [fortran_bindings.split_parameter(p)[1] for p in params.split(",")]
         functions.append((name, restype, argtypes, names))
     return constants, integer_options, callbacks, functions
 

@@ -10,7 +10,13 @@
 namespace dbs {
 
 std::vector<Vec3> read_xyz_text(const std::string& path) {
-  const std::string text = read_file_bytes(path);
+  LoadProgress none;
+  return read_xyz_text(path, none);
+}
+
+std::vector<Vec3> read_xyz_text(const std::string& path, LoadProgress& progress) {
+  const std::string text = read_file_bytes(path, progress);
+  progress.begin("parse", 0.5, 1.0, text.size());
   std::vector<Vec3> points;
   // a scanned "x y z" line holds 24 bytes or more: reserve once (trimmed below) instead of
   // growing a large cloud step by step
@@ -19,6 +25,7 @@ std::vector<Vec3> read_xyz_text(const std::string& path) {
   std::string_view line;
   Vec3 p;
   while (lines.next(line)) {
+    progress.at(lines.offset());
     const XyzFields fields = parse_xyz_fields(line, p);
     if (fields.count < 3) {
       // A section name: the boundary file was given where the cloud belongs.
@@ -34,17 +41,37 @@ std::vector<Vec3> read_xyz_text(const std::string& path) {
 }
 
 PointCloud load_cloud(const std::string& path) {
+  LoadProgress none;
+  return load_cloud(path, none);
+}
+
+namespace {
+
+std::vector<Vec3> read_points(const std::string& path, LoadProgress& progress) {
   const std::string ext = lowercase_extension(path);
-  if (ext == ".xyz" || ext == ".txt") return PointCloud(read_xyz_text(path));
-  if (ext == ".ply") return PointCloud(read_ply_vertices(read_file_bytes(path), path));
-  if (ext == ".obj") {
-    const std::string text = read_file_bytes(path);
-    if (text.empty()) fail(ErrorCode::Empty, path + ": no points (the file is empty)");
-    return PointCloud(read_obj_vertices(text, path));
+  if (ext == ".xyz" || ext == ".txt") return read_xyz_text(path, progress);
+  if (ext == ".ply" || ext == ".obj") {
+    std::string bytes = read_file_bytes(path, progress);
+    progress.begin("parse", 0.5, 1.0, bytes.size());
+    if (ext == ".ply") return read_ply_vertices(std::move(bytes), path, progress);
+    if (bytes.empty()) fail(ErrorCode::Empty, path + ": no points (the file is empty)");
+    return read_obj_vertices(bytes, path, progress);
   }
-  if (ext == ".drc") return PointCloud(read_positions_with_draco(path));
+  if (ext == ".drc") {
+    // Draco decodes in one call: reported before and after it.
+    progress.begin("decode", 0.0, 1.0, 1);
+    return read_positions_with_draco(path);
+  }
   const std::string what = ext.empty() ? "no extension" : "unknown extension '" + ext + "'";
   fail(ErrorCode::Unsupported, path + ": " + what + " for a point cloud (expected .xyz, .txt, .ply, .obj or .drc)");
+}
+
+}  // namespace
+
+PointCloud load_cloud(const std::string& path, LoadProgress& progress) {
+  PointCloud cloud(read_points(path, progress));
+  progress.finish();
+  return cloud;
 }
 
 }  // namespace dbs

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "load_progress.hpp"
 #include "point_cloud.hpp"
 
 namespace dbs {
@@ -13,9 +14,13 @@ namespace dbs {
 /// truncated, Error(NonFinite), Error(Empty) no points, Error(Unsupported) unknown extension
 /// or a .drc file in a build without Draco.
 PointCloud load_cloud(const std::string& path);
+/// The same, reporting through `progress` (see load_progress.hpp) and cancelled by it
+/// (Error(Cancelled)).
+PointCloud load_cloud(const std::string& path, LoadProgress& progress);
 
 /// x y z per line, separated by spaces, tabs or commas; further columns ignored; '#' starts a
 /// comment; blank lines ignored.
 std::vector<Vec3> read_xyz_text(const std::string& path);
+std::vector<Vec3> read_xyz_text(const std::string& path, LoadProgress& progress);
 
 }  // namespace dbs

@@ -19,11 +19,12 @@ bool vertex_fields(std::string_view line, std::string_view& fields) {
 
 // Calls fn(vertex index, line number, fields) for every `v` line until it returns false.
 template <typename Fn>
-void for_each_vertex_line(std::string_view obj, Fn fn) {
+void for_each_vertex_line(std::string_view obj, LoadProgress& progress, Fn fn) {
   ContentLines lines(obj);
   std::string_view line, fields;
   std::size_t k = 0;
   while (lines.next(line)) {
+    progress.at(lines.offset());
     if (vertex_fields(line, fields) && !fn(k++, lines.number(), fields)) return;
   }
 }
@@ -31,8 +32,13 @@ void for_each_vertex_line(std::string_view obj, Fn fn) {
 }  // namespace
 
 std::vector<Vec3> read_obj_vertices(std::string_view obj, const std::string& path) {
+  LoadProgress none;
+  return read_obj_vertices(obj, path, none);
+}
+
+std::vector<Vec3> read_obj_vertices(std::string_view obj, const std::string& path, LoadProgress& progress) {
   std::vector<Vec3> points;
-  for_each_vertex_line(obj, [&](std::size_t k, std::size_t line, std::string_view fields) {
+  for_each_vertex_line(obj, progress, [&](std::size_t k, std::size_t line, std::string_view fields) {
     Vec3 p;
     const XyzFields parsed = parse_xyz_fields(fields, p);
     const std::string at = file_line(path, line) + ": vertex " + std::to_string(k);

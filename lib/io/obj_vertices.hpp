@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geometry.hpp"
+#include "load_progress.hpp"
 
 namespace dbs {
 
@@ -16,5 +17,7 @@ namespace dbs {
 /// numbers (vertices numbered from 0), Error(NonFinite) for a non-finite coordinate,
 /// Error(Empty) when there is no `v` line.
 std::vector<Vec3> read_obj_vertices(std::string_view obj, const std::string& path);
+/// The same, reporting the bytes parsed through `progress` (whose stage the caller began).
+std::vector<Vec3> read_obj_vertices(std::string_view obj, const std::string& path, LoadProgress& progress);
 
 }  // namespace dbs

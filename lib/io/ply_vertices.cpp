@@ -201,7 +201,7 @@ std::size_t property_index(const Element& e, const char* name) {
 // Walks the binary data of elements 0..vertex (turning big-endian values little-endian in
 // place) and reads the vertices' x, y, z. An element without properties holds no data and
 // is skipped at once, whatever its count.
-std::vector<Vec3> read_binary(std::string& bytes, const Header& h, const std::string& path) {
+std::vector<Vec3> read_binary(std::string& bytes, const Header& h, const std::string& path, LoadProgress& progress) {
   const bool swap = h.format == PlyFormat::BigEndian;
   std::size_t pos = h.data_begin;
   auto take = [&](std::size_t n, const Element& e, std::int64_t k) {
@@ -225,6 +225,7 @@ std::vector<Vec3> read_binary(std::string& bytes, const Header& h, const std::st
     if (e.properties.empty()) continue;
     const bool is_vertex = ei == h.vertex;
     for (std::int64_t k = 0; k < e.count; ++k) {
+      progress.at(pos);
       Vec3 point = Vec3::Zero();
       for (std::size_t pi = 0; pi < e.properties.size(); ++pi) {
         const Property& p = e.properties[pi];
@@ -255,7 +256,7 @@ std::vector<Vec3> read_binary(std::string& bytes, const Header& h, const std::st
 // Calls row(element, k, line_number, values) for every entry of elements 0..vertex, one
 // entry per non-blank line; returns the byte offset where the vertex element ends.
 template <typename RowFn>
-std::size_t walk_ascii(std::string_view bytes, const Header& h, const std::string& path, RowFn row) {
+std::size_t walk_ascii(std::string_view bytes, const Header& h, const std::string& path, LoadProgress& progress, RowFn row) {
   std::size_t pos = h.data_begin;
   std::size_t line_number = h.lines.size();
   std::vector<std::string_view> values;
@@ -263,6 +264,7 @@ std::size_t walk_ascii(std::string_view bytes, const Header& h, const std::strin
     const Element& e = h.elements[ei];
     if (e.properties.empty()) continue;  // its entries hold no values and take no lines
     for (std::int64_t k = 0; k < e.count; ++k) {
+      progress.at(pos);
       do {
         if (pos >= bytes.size())
           fail(ErrorCode::Parse, file_line(path, line_number) + ": the file ends before " + entry_name(e, k) + " of " + std::to_string(e.count) + " (truncated file?)");
@@ -310,7 +312,7 @@ std::size_t value_index(const Element& e, const std::vector<std::string_view>& v
   return i;
 }
 
-std::vector<Vec3> read_ascii(std::string_view bytes, const Header& h, const std::string& path) {
+std::vector<Vec3> read_ascii(std::string_view bytes, const Header& h, const std::string& path, LoadProgress& progress) {
   const Element& vertex = h.elements[h.vertex];
   const std::size_t axis[3] = {property_index(vertex, "x"), property_index(vertex, "y"), property_index(vertex, "z")};
   // An ASCII vertex takes at least 6 bytes ("0 0 0\n"): memory is reserved for no more
@@ -318,7 +320,7 @@ std::vector<Vec3> read_ascii(std::string_view bytes, const Header& h, const std:
   // where its data ends).
   std::vector<Vec3> points;
   points.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(static_cast<std::uint64_t>(vertex.count), (bytes.size() - h.data_begin) / 6 + 1)));
-  walk_ascii(bytes, h, path, [&](const Element& e, std::int64_t k, std::size_t line, const std::vector<std::string_view>& values) {
+  walk_ascii(bytes, h, path, progress, [&](const Element& e, std::int64_t k, std::size_t line, const std::vector<std::string_view>& values) {
     const std::int64_t expected = expected_values(e, values);
     if (expected < 0) fail(ErrorCode::Parse, file_line(path, line) + ": " + entry_name(e, k) + " has a list length that is not a count");
     if (expected != static_cast<std::int64_t>(values.size()))
@@ -341,9 +343,14 @@ std::vector<Vec3> read_ascii(std::string_view bytes, const Header& h, const std:
 }  // namespace
 
 std::vector<Vec3> read_ply_vertices(std::string bytes, const std::string& path) {
+  LoadProgress none;
+  return read_ply_vertices(std::move(bytes), path, none);
+}
+
+std::vector<Vec3> read_ply_vertices(std::string bytes, const std::string& path, LoadProgress& progress) {
   if (bytes.empty()) fail(ErrorCode::Empty, path + ": no points (the file is empty)");
   const Header h = parse_header(bytes, path);
-  return h.format == PlyFormat::Ascii ? read_ascii(bytes, h, path) : read_binary(bytes, h, path);
+  return h.format == PlyFormat::Ascii ? read_ascii(bytes, h, path, progress) : read_binary(bytes, h, path, progress);
 }
 
 }  // namespace dbs

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "geometry.hpp"
+#include "load_progress.hpp"
 
 namespace dbs {
 
@@ -18,5 +19,7 @@ namespace dbs {
 /// Error(Unsupported) a PLY version other than 1.0, Error(NonFinite) a non-finite
 /// coordinate, Error(Empty) an empty file or no vertices.
 std::vector<Vec3> read_ply_vertices(std::string bytes, const std::string& path);
+/// The same, reporting the bytes parsed through `progress` (whose stage the caller began).
+std::vector<Vec3> read_ply_vertices(std::string bytes, const std::string& path, LoadProgress& progress);
 
 }  // namespace dbs

@@ -1,10 +1,10 @@
 #include "result_io.hpp"
 
 #include <cstdint>
-#include <cstring>
 
 #include "draco_io.hpp"
 #include "error.hpp"
+#include "little_endian.hpp"
 #include "text_io.hpp"
 
 namespace dbs {
@@ -34,32 +34,19 @@ void write_csv(const Result& result, const std::string& path) {
   file.close();
 }
 
-// Little-endian whatever the host's byte order.
-void append_le32(std::string& out, std::uint32_t bits) {
-  const char bytes[4] = {static_cast<char>(bits & 0xff), static_cast<char>((bits >> 8) & 0xff), static_cast<char>((bits >> 16) & 0xff),
-                         static_cast<char>((bits >> 24) & 0xff)};
-  out.append(bytes, 4);
-}
-
-void append_float(std::string& out, double x) {
-  const float f = static_cast<float>(x);
-  std::uint32_t bits;
-  std::memcpy(&bits, &f, 4);
-  append_le32(out, bits);
-}
-
 // Written by hand: Draco's PLY encoder writes only the attributes it knows (positions,
 // normals, colors, texture coordinates), not custom properties such as distance and patch.
+// Doubles (since 0.4; floats before), so that map coordinates read back bit for bit.
 void write_ply(const Result& result, const PointCloud& cloud, const std::string& path) {
   OutputFile file(path);
   file.write("ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(cloud.size()) +
-             "\nproperty float x\nproperty float y\nproperty float z\nproperty float u\nproperty float v\n"
-             "property float distance\nproperty int patch\nend_header\n");
+             "\nproperty double x\nproperty double y\nproperty double z\nproperty double u\nproperty double v\n"
+             "property double distance\nproperty int patch\nend_header\n");
   std::string row;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     row.clear();
     const Vec3& p = cloud.points()[i];
-    for (const double x : {p.x(), p.y(), p.z(), result.u[i], result.v[i], result.distance[i]}) append_float(row, x);
+    for (const double x : {p.x(), p.y(), p.z(), result.u[i], result.v[i], result.distance[i]}) append_le_double(row, x);
     append_le32(row, static_cast<std::uint32_t>(result.patch[i]));
     file.write(row);
   }

@@ -93,15 +93,24 @@ std::string lowercase_extension(const std::string& path) {
 }
 
 std::string read_file_bytes(const std::string& path) {
+  LoadProgress none;
+  return read_file_bytes(path, none);
+}
+
+std::string read_file_bytes(const std::string& path, LoadProgress& progress) {
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!file) fail_with_errno("cannot open '" + path + "'");
   std::string bytes;
   std::error_code size_error;
   const auto size = std::filesystem::file_size(path, size_error);
   if (!size_error) bytes.reserve(static_cast<std::size_t>(size));
+  progress.begin("read", 0.0, 0.5, size_error ? 0 : static_cast<std::uint64_t>(size));
   char chunk[1 << 16];
   std::size_t got;
-  while ((got = std::fread(chunk, 1, sizeof chunk, file.get())) > 0) bytes.append(chunk, got);
+  while ((got = std::fread(chunk, 1, sizeof chunk, file.get())) > 0) {
+    bytes.append(chunk, got);
+    progress.at(bytes.size());
+  }
   if (std::ferror(file.get())) fail_with_errno("cannot read '" + path + "'");
   return bytes;
 }
@@ -159,7 +168,7 @@ std::string excerpt(std::string_view text) {
   return text.size() <= kMax ? out : out + "...";
 }
 
-ContentLines::ContentLines(std::string_view text) : rest_(text) {
+ContentLines::ContentLines(std::string_view text) : size_(text.size()), rest_(text) {
   constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
   if (rest_.substr(0, kByteOrderMark.size()) == kByteOrderMark) rest_.remove_prefix(kByteOrderMark.size());
 }

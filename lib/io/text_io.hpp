@@ -8,11 +8,14 @@
 #include <string_view>
 
 #include "geometry.hpp"
+#include "load_progress.hpp"
 
 namespace dbs {
 
 /// The file's bytes. Error(Io) "cannot open 'PATH': <strerror>" (or "cannot read").
 std::string read_file_bytes(const std::string& path);
+/// The same, reporting the bytes read as the stage "read" (fractions 0 to 0.5) of `progress`.
+std::string read_file_bytes(const std::string& path, LoadProgress& progress);
 
 /// A file written through a memory buffer. Error(Io) "cannot create 'PATH': <strerror>" (or
 /// "cannot write"); a file left unclosed by an exception is closed without a report.
@@ -61,8 +64,11 @@ class ContentLines {
   bool next(std::string_view& line);
   /// 1-based number of the line last returned.
   std::size_t number() const { return number_; }
+  /// Bytes of the text read so far (up to the end of the line last returned).
+  std::size_t offset() const { return size_ - rest_.size(); }
 
  private:
+  std::size_t size_;
   std::string_view rest_;
   std::size_t number_ = 0;
 };

@@ -22,7 +22,6 @@ constexpr double kGapQuantile = 0.9;        ///< the gap: this quantile of the s
 constexpr double kMaxGap = 10.0;            ///< beyond this many point spacings: does the boundary belong to the cloud?
 constexpr double kMaxSideGap = 4.0;         ///< beyond this many: sides cutting across the surface (the controls stay below 1.6)
 constexpr std::size_t kSpacingNeighbour = 6;    ///< a point's local spacing: the distance to its 6th nearest point
-constexpr std::size_t kSpacingSample = 1024;    ///< the typical local spacing: the median of this many points'
 constexpr double kMaxSpacingRatio = 4.0;        ///< a local spacing counts as at most this x the typical one (and at least its inverse): a fringe of stray points near the boundary does not hide its gap
 constexpr double kMaxScaleRatio = 10.0;     ///< warn when the cloud's size / the boundary's is beyond this or below its inverse
 constexpr std::size_t kPointsPerCell = 16;  ///< coverage grid: about this many points per cell on average
@@ -34,8 +33,9 @@ constexpr std::size_t kMinClamped = 10;     ///< ... and at least this many
 /// The figures; see the DBS_STAT_* of the same names.
 struct InputChecks {
   /// kGapQuantile of the distances of boundary samples to their nearest point, each in units
-  /// of the local spacing there, scaled to spacings h (the local spacing over its median, times
-  /// h): a sparse part of a scan with a varying density does not count as a gap.
+  /// of the local spacing there, scaled to spacings h (the local spacing over its median over
+  /// all samples' nearest points, times h): a sparse part of a scan with a varying density
+  /// does not count as a gap.
   double boundary_gap = 0.0;
   double scale_ratio = 1.0;    ///< the cloud's bounding-box diagonal / the boundary's
   double coverage = 1.0;       ///< share of a g x g grid over [0,1]^2 holding some point's (u,v)

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "boundary_shape.hpp"
 #include "coons_patch.hpp"
 #include "error.hpp"
 #include "number_text.hpp"
@@ -201,6 +202,7 @@ Boundary::Boundary(std::vector<Vec3> bottom, std::vector<Vec3> right, std::vecto
     sides_[static_cast<int>(s)] = Polyline(std::move(pts[static_cast<int>(s)]));
   }
   check_area(*this, size);
+  check_boundary_shape(sides_, size);
 }
 
 Boundary::Boundary(Polyline bottom, Polyline right, Polyline top, Polyline left)

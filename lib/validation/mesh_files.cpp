@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <initializer_list>
 
 #include "error.hpp"
+#include "little_endian.hpp"
 #include "text_io.hpp"
 
 namespace dbs {
@@ -32,18 +32,6 @@ std::vector<std::int32_t> check_mesh(const std::string& path, const std::vector<
 std::string file_name_of(const std::string& path) {
   std::size_t slash = path.find_last_of("/\\");
   return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
-void append_le32(std::string& out, std::uint32_t bits) {
-  const char b[4] = {static_cast<char>(bits & 0xff), static_cast<char>((bits >> 8) & 0xff), static_cast<char>((bits >> 16) & 0xff), static_cast<char>((bits >> 24) & 0xff)};
-  out.append(b, 4);
-}
-
-void append_float(std::string& out, double value) {
-  float x = static_cast<float>(value);
-  std::uint32_t bits;
-  std::memcpy(&bits, &x, 4);
-  append_le32(out, bits);
 }
 
 // Numbers go through append_number (std::to_chars), so the files do not depend on the locale.
@@ -100,13 +88,13 @@ void write_ply_mesh(const std::string& path, const std::vector<Vec3>& points, co
   const std::size_t vertices = static_cast<std::size_t>(std::count_if(written.begin(), written.end(), [](std::int32_t w) { return w >= 0; }));
   OutputFile ply(path);
   ply.write("ply\nformat binary_little_endian 1.0\ncomment libdbs: mesh of the cloud from the 2D Delaunay triangulation of its (u,v)\n"
-            "element vertex " + std::to_string(vertices) + "\nproperty float x\nproperty float y\nproperty float z\nproperty float u\nproperty float v\n"
+            "element vertex " + std::to_string(vertices) + "\nproperty double x\nproperty double y\nproperty double z\nproperty double u\nproperty double v\n"
             "element face " + std::to_string(triangles.size()) + "\nproperty list uchar int vertex_indices\nend_header\n");
   std::string record;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (written[i] < 0) continue;
     record.clear();
-    for (double x : {points[i].x(), points[i].y(), points[i].z(), u[i], v[i]}) append_float(record, x);
+    for (double x : {points[i].x(), points[i].y(), points[i].z(), u[i], v[i]}) append_le_double(record, x);
     ply.write(record);
   }
   for (const Triangle& t : triangles) {

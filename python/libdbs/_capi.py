@@ -148,6 +148,7 @@ FUNCTIONS = {
     "dbs_last_error_errno": (ctypes.c_int, [], ()),
     "dbs_cloud_create": (ctypes.c_int, [ctypes.POINTER(ctypes.c_double), ctypes.c_size_t, ctypes.POINTER(ctypes.c_void_p)], ('xyz', 'count', 'out')),
     "dbs_cloud_load": (ctypes.c_int, [ctypes.c_char_p, ctypes.POINTER(ctypes.c_void_p)], ('path', 'out')),
+    "dbs_cloud_load_with_options": (ctypes.c_int, [ctypes.c_char_p, ctypes.c_void_p, ctypes.POINTER(ctypes.c_void_p)], ('path', 'options', 'out')),
     "dbs_cloud_destroy": (None, [ctypes.c_void_p], ('cloud',)),
     "dbs_cloud_count": (ctypes.c_int, [ctypes.c_void_p, ctypes.POINTER(ctypes.c_size_t)], ('cloud', 'out')),
     "dbs_cloud_bounds": (ctypes.c_int, [ctypes.c_void_p, ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_double)], ('cloud', 'out_min', 'out_max')),

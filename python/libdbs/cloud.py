@@ -54,9 +54,31 @@ class Cloud(_Handle):
         super().__init__(_new(lib.dbs_cloud_create, double_pointer(array), array.shape[0]))
 
     @classmethod
-    def load(cls, path: "str | os.PathLike") -> "Cloud":
+    def load(cls, path: "str | os.PathLike", options=None, progress=None) -> "Cloud":
+        """Reads .xyz/.txt/.csv, .ply, .obj or .drc. With `progress(fraction, stage)` (or
+        `options` carrying one) a big file reports its reading and may be cancelled (True);
+        an exception raised in it cancels the load and is the cause of CancelledError."""
         cloud = cls.__new__(cls)
-        _Handle.__init__(cloud, _new(lib.dbs_cloud_load, os.fsencode(path)))
+        if options is None and progress is None:
+            _Handle.__init__(cloud, _new(lib.dbs_cloud_load, os.fsencode(path)))
+            return cloud
+        from .options import Options
+        from .errors import CancelledError
+        run = options if options is not None else Options()
+        if progress is not None:
+            run.on_progress(progress)
+        handle = ctypes.c_void_p()
+        status = lib.dbs_cloud_load_with_options(os.fsencode(path), run.handle, ctypes.byref(handle))
+        failure, run.failure = run.failure, None
+        if isinstance(failure, KeyboardInterrupt):
+            raise failure
+        try:
+            check(status)
+        except CancelledError as cancelled:
+            if failure is not None:
+                raise cancelled from failure
+            raise
+        _Handle.__init__(cloud, handle)
         return cloud
 
     def __len__(self) -> int:

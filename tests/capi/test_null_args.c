@@ -45,6 +45,8 @@ static void cloud_functions(void **state) {
   assert_null_argument(dbs_cloud_create(xyz, 1, NULL), "dbs_cloud_create", "out");
   assert_null_argument(dbs_cloud_load(NULL, &cloud), "dbs_cloud_load", "path");
   assert_null_argument(dbs_cloud_load("cloud.xyz", NULL), "dbs_cloud_load", "out");
+  assert_null_argument(dbs_cloud_load_with_options(NULL, NULL, &cloud), "dbs_cloud_load_with_options", "path");
+  assert_null_argument(dbs_cloud_load_with_options("cloud.xyz", NULL, NULL), "dbs_cloud_load_with_options", "out");
   assert_ptr_equal(cloud, (dbs_cloud *)0x1);
   assert_null_argument(dbs_cloud_count(NULL, &count), "dbs_cloud_count", "cloud");
   assert_null_argument(dbs_cloud_count(f->cloud, NULL), "dbs_cloud_count", "out");

@@ -515,9 +515,10 @@ static void save_ply_and_drc(void **state) {
   assert_memory_equal(text, "ply\n", 4);
   assert_non_null(strstr(text, "format binary_little_endian 1.0"));
   assert_non_null(strstr(text, "element vertex 231"));
-  assert_non_null(strstr(text, "property float u"));
-  assert_non_null(strstr(text, "property float v"));
-  assert_non_null(strstr(text, "property float distance"));
+  assert_non_null(strstr(text, "property double x"));
+  assert_non_null(strstr(text, "property double u"));
+  assert_non_null(strstr(text, "property double v"));
+  assert_non_null(strstr(text, "property double distance"));
   assert_non_null(strstr(text, "property int patch"));
   free(text);
   assert_reloads_as_the_cloud(path, 1e-6);

@@ -382,8 +382,8 @@ static void test_mesh_files(void **state) {
   assert_non_null(strstr(content, text));
   const char *end = strstr(content, "end_header\n");
   assert_non_null(end);
-  /* binary body: 5 floats per vertex, 1 + 3*4 bytes per face */
-  assert_int_equal(size - (size_t)(end + strlen("end_header\n") - content), (size_t)NPOINTS * 20 + (size_t)2 * NCELLS * 13);
+  /* binary body: 5 doubles per vertex (since 0.4), 1 + 3*4 bytes per face */
+  assert_int_equal(size - (size_t)(end + strlen("end_header\n") - content), (size_t)NPOINTS * 40 + (size_t)2 * NCELLS * 13);
   free(content);
 
   char stl[512];

@@ -77,14 +77,14 @@ void test_ply(void**) {
   const std::string header = data.substr(0, body);
   assert_true(header.rfind("ply\nformat binary_little_endian 1.0\n", 0) == 0);
   assert_true(header.find("element vertex 7\n") != std::string::npos);
-  assert_true(header.find("property float u\nproperty float v\n") != std::string::npos);
+  assert_true(header.find("property double x\nproperty double y\nproperty double z\nproperty double u\nproperty double v\n") != std::string::npos);
   assert_true(header.find("element face 4\nproperty list uchar int vertex_indices\n") != std::string::npos);
-  assert_int_equal(data.size() - body, 7 * 20 + 4 * 13);
+  assert_int_equal(data.size() - body, 7 * 40 + 4 * 13);
   // vertex 2: x y z u v = 2 0 0.5 1 0; face 2: 3 vertices 1 2 5 (little-endian on this host)
-  float vertex[5];
-  std::memcpy(vertex, data.data() + body + 2 * 20, sizeof vertex);
-  assert_true(vertex[0] == 2.0f && vertex[1] == 0.0f && vertex[2] == 0.5f && vertex[3] == 1.0f && vertex[4] == 0.0f);
-  const char* face = data.data() + body + 7 * 20 + 2 * 13;
+  double vertex[5];
+  std::memcpy(vertex, data.data() + body + 2 * 40, sizeof vertex);
+  assert_true(vertex[0] == 2.0 && vertex[1] == 0.0 && vertex[2] == 0.5 && vertex[3] == 1.0 && vertex[4] == 0.0);
+  const char* face = data.data() + body + 7 * 40 + 2 * 13;
   std::int32_t indices[3];
   std::memcpy(indices, face + 1, sizeof indices);
   assert_int_equal(face[0], 3);

@@ -91,12 +91,12 @@ void csv_has_header_rows_in_order_and_exact_numbers(void**) {
   }
 }
 
-float le_float(const char* p) {
-  std::uint32_t bits = 0;
-  for (int i = 3; i >= 0; --i) bits = (bits << 8) | static_cast<unsigned char>(p[i]);
-  float f;
-  std::memcpy(&f, &bits, 4);
-  return f;
+double le_double(const char* p) {
+  std::uint64_t bits = 0;
+  for (int i = 7; i >= 0; --i) bits = (bits << 8) | static_cast<unsigned char>(p[i]);
+  double d;
+  std::memcpy(&d, &bits, 8);
+  return d;
 }
 
 std::int32_t le_int(const char* p) {
@@ -115,32 +115,30 @@ void ply_has_documented_header_and_payload(void**) {
       "ply\n"
       "format binary_little_endian 1.0\n"
       "element vertex 3000\n"
-      "property float x\n"
-      "property float y\n"
-      "property float z\n"
-      "property float u\n"
-      "property float v\n"
-      "property float distance\n"
+      "property double x\n"
+      "property double y\n"
+      "property double z\n"
+      "property double u\n"
+      "property double v\n"
+      "property double distance\n"
       "property int patch\n"
       "end_header\n";
   assert_true(bytes.compare(0, header.size(), header) == 0);
-  assert_int_equal(bytes.size(), header.size() + kPoints * 28);
+  assert_int_equal(bytes.size(), header.size() + kPoints * 52);
   for (std::size_t i = 0; i < kPoints; ++i) {
-    const char* rec = bytes.data() + header.size() + 28 * i;
+    const char* rec = bytes.data() + header.size() + 52 * i;
     const Vec3& p = cloud.points()[i];
     const double expected[6] = {p.x(), p.y(), p.z(), result.u[i], result.v[i], result.distance[i]};
     for (int k = 0; k < 6; ++k) {
-      if (le_float(rec + 4 * k) != static_cast<float>(expected[k])) fail_msg("point %zu field %d: %.9g, expected %.9g", i, k, le_float(rec + 4 * k), expected[k]);
+      if (le_double(rec + 8 * k) != expected[k]) fail_msg("point %zu field %d: %.17g, expected %.17g", i, k, le_double(rec + 8 * k), expected[k]);
     }
-    assert_int_equal(le_int(rec + 24), result.patch[i]);
+    assert_int_equal(le_int(rec + 48), result.patch[i]);
   }
-  // and it is a PLY file that the cloud reader (Draco) reads back
-  if (dbs::draco_available()) {
-    const auto again = dbs::load_cloud(path);
-    assert_int_equal(again.size(), kPoints);
-    for (std::size_t i = 0; i < kPoints; ++i)
-      for (int k = 0; k < 3; ++k) assert_true(again.points()[i][k] == static_cast<double>(static_cast<float>(cloud.points()[i][k])));
-  }
+  // and it is a PLY file that the cloud reader reads back, bit for bit
+  const auto again = dbs::load_cloud(path);
+  assert_int_equal(again.size(), kPoints);
+  for (std::size_t i = 0; i < kPoints; ++i)
+    for (int k = 0; k < 3; ++k) assert_true(again.points()[i][k] == cloud.points()[i][k]);
 }
 
 void drc_keeps_positions_and_parameters_within_quantization(void**) {

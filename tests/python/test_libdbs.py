@@ -161,3 +161,13 @@ def test_boundaries_round_trip_and_detect():
     detected = libdbs.Boundary.detect(cloud)
     assert detected.holes == []
     assert "holes" in repr(detected)
+
+
+def test_loading_reports_progress_and_can_be_cancelled():
+    path = os.path.join(DATA, "panel.xyz")
+    stages = []
+    cloud = libdbs.Cloud.load(path, progress=lambda fraction, stage: stages.append((fraction, stage)))
+    assert len(cloud) == 2000 and stages[-1] == (1.0, "done")
+    assert all(a[0] <= b[0] for a, b in zip(stages, stages[1:]))
+    with pytest.raises(libdbs.CancelledError):
+        libdbs.Cloud.load(path, progress=lambda fraction, stage: True)
