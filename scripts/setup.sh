@@ -13,7 +13,11 @@ packages=(
   build-essential cmake pkg-config ccache gfortran python3 binutils
   libeigen3-dev libnanoflann-dev libceres-dev libdraco-dev
   libcmocka-dev libqhull-dev libpng-dev locales
+  clang libclang-rt-dev valgrind
 )
+# clang and libclang-rt-dev (libFuzzer and clang's sanitizer runtimes of Debian's default
+# clang): the fuzz targets (scripts/fuzz.sh); valgrind: the memcheck of the examples
+# (scripts/memcheck.sh).
 
 sudo=""
 if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
