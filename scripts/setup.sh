@@ -14,7 +14,11 @@ packages=(
   libeigen3-dev libnanoflann-dev libceres-dev libdraco-dev
   libcmocka-dev libqhull-dev libpng-dev locales
   python3-numpy python3-pytest python3-setuptools python3-venv python3-pip
+  clang libclang-rt-dev valgrind
 )
+# clang and libclang-rt-dev (libFuzzer and clang's sanitizer runtimes of Debian's default
+# clang): the fuzz targets (scripts/fuzz.sh); valgrind: the memcheck of the examples
+# (scripts/memcheck.sh).
 
 sudo=""
 if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi

@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
 # Runs every check of libdbs: set-up (scripts/setup.sh: packages, library, dbs-param and the
-# examples), the rest of the Release build (tests and benchmark, build/) and its test suite, the whole
-# suite again under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/), the suite of a
-# build without the optional Draco, Ceres, validation and report (build-minimal/), and the
-# outside-consumer check of the installed package (shared and static, full and minimal). Exits non-zero if
-# anything fails; the summary at the end lists each step with its time.
+# examples), the rest of the Release build (tests and benchmark, build/) and its whole test
+# suite; the suite without the heavy shape tests (ctest label `heavy`) under AddressSanitizer
+# + UndefinedBehaviorSanitizer (build-asan/); the libFuzzer targets (tests/fuzz, build-fuzz/:
+# corpus replayed, then a fixed number of runs with a fixed seed); the thread tests (label
+# `threads`) under ThreadSanitizer (build-tsan/); valgrind's memcheck of dbs-param,
+# dbs-boundary and the examples; the suite of a build without the optional Draco, Ceres,
+# validation and report (build-minimal/); and the outside-consumer check of the installed
+# package (shared and static, full and minimal). Exits non-zero if anything fails; the
+# summary at the end lists each step with its time (and the number of tests it ran).
 #
 # usage: scripts/test.sh
 set -uo pipefail
@@ -16,23 +20,36 @@ suite_start=$SECONDS
 summary=()
 failed=0
 
-# step NAME COMMAND...: runs one step, records its outcome and duration.
+# step NAME COMMAND...: runs one step, records its outcome and duration (and what the step
+# put in step_note: how many tests it ran).
+step_note=""
 step() {
   local name="$1"
   shift
   local start=$SECONDS
+  step_note=""
   echo
   echo "==== $name"
   if "$@"; then
-    summary+=("ok      $(printf '%4d' $((SECONDS - start))) s  $name")
+    summary+=("ok      $(printf '%4d' $((SECONDS - start))) s  $name${step_note:+: $step_note}")
   else
-    summary+=("FAILED  $(printf '%4d' $((SECONDS - start))) s  $name")
+    summary+=("FAILED  $(printf '%4d' $((SECONDS - start))) s  $name${step_note:+: $step_note}")
     failed=1
   fi
 }
 
+# run_ctest DIR [CTEST ARGS...]: the suite of DIR, its closing lines shown; the number of
+# tests it ran goes to the summary.
 run_ctest() {
-  ctest --test-dir "$1" --output-on-failure -j"$jobs" --timeout 900
+  local dir="$1"
+  shift
+  local log="$dir/ctest-ci.log"
+  ctest --test-dir "$dir" --output-on-failure -j"$jobs" --timeout 900 "$@" 2>&1 | tee "$log"
+  local status=${PIPESTATUS[0]}
+  local ran
+  ran="$(grep -o 'tests failed out of [0-9]*' "$log" | grep -o '[0-9]*$')"
+  step_note="${ran:-0} tests${*:+ ($*)}"
+  return "$status"
 }
 
 launcher=()
@@ -67,6 +84,36 @@ build_minimal() {
     cmake --build "$repo/build-minimal" -j"$jobs"
 }
 
+# Every fuzz target: its corpus replayed, then its fixed number of runs (scripts/fuzz.sh).
+run_fuzz() {
+  local log="$repo/build-fuzz/fuzz-ci.log"
+  bash scripts/fuzz.sh ci 2>&1 | tee "$log"
+  local status=${PIPESTATUS[0]}
+  step_note="$(grep -o '[0-9]* targets run' "$log")"
+  return "$status"
+}
+
+# valgrind's memcheck of the programs of build/ (scripts/memcheck.sh).
+run_memcheck() {
+  local log="$repo/build/memcheck.log"
+  bash scripts/memcheck.sh build 2>&1 | tee "$log"
+  local status=${PIPESTATUS[0]}
+  step_note="$(grep -o '[0-9]* programs run' "$log")"
+  return "$status"
+}
+
+# ThreadSanitizer on the tests where threads of the host and of libdbs meet (ctest label
+# `threads`): nothing else is built. Without the optional components: their outside
+# libraries are not instrumented, and the thread tests use none of them.
+build_tsan() {
+  local flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1"
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1")
+  cmake -S "$repo" -B "$repo/build-tsan" "${flags[@]}" -DDBS_SANITIZE_THREAD=ON -DDBS_BUILD_TESTS=ON \
+    -DDBS_BUILD_EXAMPLES=OFF -DDBS_BUILD_BENCH=OFF -DDBS_WITH_DRACO=OFF -DDBS_WITH_CERES=OFF \
+    -DDBS_WITH_VALIDATION=OFF -DDBS_WITH_REPORT=OFF "${launcher[@]}" &&
+    cmake --build "$repo/build-tsan" -j"$jobs"
+}
+
 step "set-up: packages, library, dbs-param, examples (scripts/setup.sh)" bash scripts/setup.sh
 if [ "$failed" -ne 0 ]; then
   echo "test: the set-up failed; nothing else can run" >&2
@@ -77,8 +124,16 @@ step "test suite, Release (build/)" run_ctest build
 step "ASan+UBSan build (build-asan/)" build_asan
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-step "test suite, ASan+UBSan (build-asan/)" run_ctest build-asan
+# the heavy shape tests ran in the Release suite; under the sanitizers every other test
+step "test suite without the heavy tests, ASan+UBSan (build-asan/)" run_ctest build-asan -LE heavy
+step "fuzz targets: libFuzzer, clang, ASan+UBSan (build-fuzz/, scripts/fuzz.sh build)" bash scripts/fuzz.sh build
+step "fuzz runs: corpus + fixed runs, -seed=1 (scripts/fuzz.sh ci)" run_fuzz
 unset ASAN_OPTIONS UBSAN_OPTIONS
+step "ThreadSanitizer build: the thread tests only (build-tsan/)" build_tsan
+export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
+step "thread tests, ThreadSanitizer (build-tsan/)" run_ctest build-tsan -L threads
+unset TSAN_OPTIONS
+step "valgrind memcheck: dbs-param, dbs-boundary, examples (scripts/memcheck.sh)" run_memcheck
 step "minimal build: no Draco, Ceres, validation, report (build-minimal/)" build_minimal
 step "test suite, minimal build (build-minimal/)" run_ctest build-minimal
 step "installed-package consumers (scripts/consumer_check.sh)" bash scripts/consumer_check.sh
