@@ -63,22 +63,15 @@ class Cloud(_Handle):
             _Handle.__init__(cloud, _new(lib.dbs_cloud_load, os.fsencode(path)))
             return cloud
         from .options import Options
-        from .errors import CancelledError
         run = options if options is not None else Options()
         if progress is not None:
             run.on_progress(progress)
         handle = ctypes.c_void_p()
         status = lib.dbs_cloud_load_with_options(os.fsencode(path), run.handle, ctypes.byref(handle))
-        failure, run.failure = run.failure, None
-        if isinstance(failure, KeyboardInterrupt):
+        _Handle.__init__(cloud, handle.value)  # owned before anything is raised
+        failure = run.check_run(status)
+        if failure is not None:
             raise failure
-        try:
-            check(status)
-        except CancelledError as cancelled:
-            if failure is not None:
-                raise cancelled from failure
-            raise
-        _Handle.__init__(cloud, handle)
         return cloud
 
     def __len__(self) -> int:

@@ -6,7 +6,7 @@ import numbers
 
 from . import _capi
 from ._library import lib
-from .errors import InvalidViewError, check
+from .errors import CancelledError, InvalidViewError, check
 
 Option = enum.IntEnum("Option", {name[len("OPT_"):]: value for name, value in vars(_capi).items() if name.startswith("OPT_")})
 Option.__doc__ = "The options of dbs.h (DBS_OPT_*), by name: Option.MAX_LEVEL, ..."
@@ -73,6 +73,22 @@ class Options:
     def __repr__(self):
         values = ", ".join(f"{o.name.lower()}={self.get(o)!r}" for o in Option)
         return f"Options({values})"
+
+    def check_run(self, status):
+        """After a call that ran these options' callbacks: Ctrl-C in a callback is raised again;
+        a cancellation is raised with the callback's exception as its cause; any other failed
+        status is raised. Returns the exception a callback raised without cancelling the call
+        (a warning's), for the caller to raise once it owns the call's output."""
+        failure, self.failure = self.failure, None
+        if isinstance(failure, KeyboardInterrupt):
+            raise failure
+        try:
+            check(status)
+        except CancelledError as cancelled:
+            if failure is not None:
+                raise cancelled from failure
+            raise
+        return failure
 
     # ---- callbacks: an exception raised in one (KeyboardInterrupt included) cancels the run
     # and is kept in `failure`; the run's caller raises it (parameterize does).

@@ -10,7 +10,7 @@ from . import _capi
 from ._arrays import double_pointer, int32_pointer, points_out
 from ._library import lib
 from .cloud import Boundary, Cloud, _Handle
-from .errors import CancelledError, InvalidViewError, check
+from .errors import InvalidViewError, check
 from .options import Options
 
 Stat = enum.IntEnum("Stat", {name[len("STAT_"):]: value for name, value in vars(_capi).items() if name.startswith("STAT_")})
@@ -182,18 +182,8 @@ def parameterize(points, boundary: Boundary, options: "Options | None" = None, *
         run.on_warning(warning)
     handle = ctypes.c_void_p()
     status = lib.dbs_parameterize(cloud.handle, boundary.handle, run.handle, ctypes.byref(handle))
-    failure, run.failure = run.failure, None
-    if isinstance(failure, KeyboardInterrupt):
-        if handle:
-            lib.dbs_result_destroy(handle)
-        raise failure
-    try:
-        check(status)
-    except CancelledError as cancelled:
-        if failure is not None:
-            raise cancelled from failure
-        raise
-    result = Result(handle)
+    result = Result(handle.value)  # owned (and freed if anything is raised) at once
+    failure = run.check_run(status)
     if failure is not None:  # a warning callback that raised: the run went on
         raise failure
     return result
