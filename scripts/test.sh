@@ -84,23 +84,22 @@ build_minimal() {
     cmake --build "$repo/build-minimal" -j"$jobs"
 }
 
-# Every fuzz target: its corpus replayed, then its fixed number of runs (scripts/fuzz.sh).
-run_fuzz() {
-  local log="$repo/build-fuzz/fuzz-ci.log"
-  bash scripts/fuzz.sh ci 2>&1 | tee "$log"
+# run_counted LOG PATTERN COMMAND...: runs the command with its output also in LOG; the
+# step's note is the count its closing line gives (PATTERN, e.g. "targets run").
+run_counted() {
+  local log="$1" pattern="$2"
+  shift 2
+  "$@" 2>&1 | tee "$log"
   local status=${PIPESTATUS[0]}
-  step_note="$(grep -o '[0-9]* targets run' "$log")"
+  step_note="$(grep -o "[0-9]* $pattern" "$log")"
   return "$status"
 }
 
+# Every fuzz target: its corpus replayed, then its fixed number of runs (scripts/fuzz.sh).
+run_fuzz() { run_counted "$repo/build-fuzz/fuzz-ci.log" "targets run" bash scripts/fuzz.sh ci; }
+
 # valgrind's memcheck of the programs of build/ (scripts/memcheck.sh).
-run_memcheck() {
-  local log="$repo/build/memcheck.log"
-  bash scripts/memcheck.sh build 2>&1 | tee "$log"
-  local status=${PIPESTATUS[0]}
-  step_note="$(grep -o '[0-9]* programs run' "$log")"
-  return "$status"
-}
+run_memcheck() { run_counted "$repo/build/memcheck.log" "programs run" bash scripts/memcheck.sh build; }
 
 # ThreadSanitizer on the tests where threads of the host and of libdbs meet (ctest label
 # `threads`): nothing else is built. Without the optional components: their outside
