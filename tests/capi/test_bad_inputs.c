@@ -272,7 +272,8 @@ static int v_tolerance(void) { dbs_distances *d = NULL; return dbs_distances_cre
 static int v_report(void) { return dbs_report_write(r_result, r_cloud, NULL, file_with("a_file", "x", 0)); }
 static int v_mesh_ext(void) {
   dbs_mesh *m = NULL;
-  assert_ok(dbs_mesh_create(r_result, r_cloud, &m));
+  const int created = dbs_mesh_create(r_result, r_cloud, &m);
+  if (created != DBS_OK) return created; /* a build without the validation: its refusal */
   const int s = dbs_mesh_save(m, no_file("mesh.stl"));
   dbs_mesh_destroy(m);
   return s;
@@ -442,7 +443,8 @@ static void run_rows(char *table, size_t size) {
   for (size_t k = 0; k < ROWS; ++k) {
     const row *r = &rows[k];
     if (UNDER_ASAN && r->run == v_tri_memory) continue;
-    const int expected = r->needs_validation && (!validation || (r->run == v_report && !report)) ? DBS_ERR_UNSUPPORTED : r->status;
+    const int missing = r->needs_validation && (!validation || (r->run == v_report && !report));
+    const int expected = missing ? DBS_ERR_UNSUPPORTED : r->status;
     dbs_last_error_message(); /* a successful row leaves the last message: cleared below */
     const int status = r->run();
     if (status != expected) print_error("row %zu (%s, %s): status %d, expected %d: %s\n", k + 1, r->input, r->call, status, expected, dbs_last_error_message());
@@ -450,10 +452,13 @@ static void run_rows(char *table, size_t size) {
     char excerpt[512] = "";
     if (status != DBS_OK) {
       const char *message = dbs_last_error_message();
-      if (strncmp(message, r->call, strlen(r->call)) != 0 || !strstr(message, r->excerpt))
-        print_error("row %zu: message \"%s\" should start with %s and hold \"%s\"\n", k + 1, message, r->call, r->excerpt);
-      assert_int_equal(strncmp(message, r->call, strlen(r->call)), 0);
-      assert_non_null(strstr(message, r->excerpt));
+      /* refused for a missing feature: the message says so instead of the row's own (and may
+       * come from a call the row needed first, e.g. dbs_mesh_create before dbs_mesh_save) */
+      const char *wanted = missing ? "built without" : r->excerpt, *call = missing ? "dbs_" : r->call;
+      if (strncmp(message, call, strlen(call)) != 0 || !strstr(message, wanted))
+        print_error("row %zu: message \"%s\" should start with %s and hold \"%s\"\n", k + 1, message, call, wanted);
+      assert_int_equal(strncmp(message, call, strlen(call)), 0);
+      assert_non_null(strstr(message, wanted));
       excerpt_of(message, excerpt, sizeof excerpt);
     }
     snprintf(table + strlen(table), size - strlen(table), "| %zu | %s | `%s` | %s | %s |\n", k + 1, r->input, r->call, status == DBS_OK ? "DBS_OK" : dbs_status_string(status), excerpt);

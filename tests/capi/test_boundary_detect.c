@@ -162,10 +162,10 @@ static void writes_the_boundary_report(void **state) {
     snprintf(path, sizeof path, "%s/boundary.json", dir);
     remove(path);
     remove(dir);
+    assert_failure(dbs_boundary_report_write(NULL, cloud, dir), DBS_ERR_NULL_ARGUMENT, "dbs_boundary_report_write", "boundary");
+    assert_failure(dbs_boundary_report_write(boundary, NULL, dir), DBS_ERR_NULL_ARGUMENT, "dbs_boundary_report_write", "cloud");
+    assert_failure(dbs_boundary_report_write(boundary, cloud, NULL), DBS_ERR_NULL_ARGUMENT, "dbs_boundary_report_write", "dir");
   }
-  assert_failure(dbs_boundary_report_write(NULL, cloud, dir), DBS_ERR_NULL_ARGUMENT, "dbs_boundary_report_write", "boundary");
-  assert_failure(dbs_boundary_report_write(boundary, NULL, dir), DBS_ERR_NULL_ARGUMENT, "dbs_boundary_report_write", "cloud");
-  assert_failure(dbs_boundary_report_write(boundary, cloud, NULL), DBS_ERR_NULL_ARGUMENT, "dbs_boundary_report_write", "dir");
   dbs_boundary_destroy(boundary);
   dbs_cloud_destroy(cloud);
 }
