@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "dbs.h"
+#include "library_message.h"
 
 #define EXIT_USAGE 2
 
@@ -48,11 +49,8 @@ static void usage_error(const char *format, ...) {
 
 /* A failed library call: what was being done, then the library's own message (one line). */
 static void library_error(int status, const char *doing) {
-  const char *message = dbs_last_error_message();
   char text[1024];
-  if (message == NULL || message[0] == '\0') message = dbs_status_string(status);
-  snprintf(text, sizeof text, "%s", message);
-  text[strcspn(text, "\r\n")] = '\0';
+  library_message(status, text, sizeof text);
   fprintf(stderr, "dbs-boundary: %s: %s\n", doing, text);
 }
 

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "dbs.h"
+#include "library_message.h"
 
 #define EXIT_USAGE 2
 
@@ -86,12 +87,8 @@ static void usage_error(const char *format, ...) {
 
 /* Reports a failed library call: what was being done, then the library's own message. */
 static void library_error(int status, const char *doing) {
-  const char *message = dbs_last_error_message();
   char text[1024];
-  if (message == NULL || message[0] == '\0') message = dbs_status_string(status);
-  /* The message is one line by contract; cut anything after a newline to keep it so. */
-  snprintf(text, sizeof text, "%s", message);
-  text[strcspn(text, "\r\n")] = '\0';
+  library_message(status, text, sizeof text);
   if (progress_line_open) {
     fputc('\n', stderr);
     progress_line_open = 0;
