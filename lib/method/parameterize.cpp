@@ -374,9 +374,7 @@ class Driver {
     const Repair repair = repair_folds(result_, points_, doubtful_points(result_, points_, judged, folds.state, threads_, &meter_), threads_);
     result_.repaired_points = repair.repaired;
     if (repair.refitted.empty()) return repair.repaired > 0;
-    std::vector<std::vector<double>> distances(result_.patches.size());
-    for (std::size_t i = 0; i < points_.size(); ++i)
-      if (result_.patch[i] >= 0 && !result_.left_out(i)) distances[static_cast<std::size_t>(result_.patch[i])].push_back(result_.distance[i]);
+    const std::vector<std::vector<double>> distances = counted_distances_by_patch();
     for (int id : repair.refitted) judge_leaf(result_.patches[static_cast<std::size_t>(id)], distances[static_cast<std::size_t>(id)]);
     return repair.repaired > 0;
   }
@@ -531,6 +529,15 @@ class Driver {
            (options_.crop ? "and cropped" : "each takes the (u,v) of its nearest point");
   }
 
+  /// Per patch, the distances of the points it parameterizes that the statistics count (not
+  /// far outside the body, not cropped), in input order.
+  std::vector<std::vector<double>> counted_distances_by_patch() const {
+    std::vector<std::vector<double>> distances(result_.patches.size());
+    for (std::size_t i = 0; i < points_.size(); ++i)
+      if (result_.patch[i] >= 0 && !result_.left_out(i)) distances[static_cast<std::size_t>(result_.patch[i])].push_back(result_.distance[i]);
+    return distances;
+  }
+
   /// The points to crop (Options::crop): those outside the boundary and those far outside
   /// the body; the rest are kept_. Their (u,v) stay until crop(): the repair's fill may lean
   /// on them as fixed neighbours, but it neither moves them nor fits surfaces to them.
@@ -553,9 +560,7 @@ class Driver {
   /// (and the run) met the target, are not those of points it has no (u,v) for. A leaf left
   /// with none has nothing to miss.
   void judge_leaves_on_kept_points() {
-    std::vector<std::vector<double>> distances(result_.patches.size());
-    for (std::size_t i : kept_)
-      if (result_.patch[i] >= 0) distances[static_cast<std::size_t>(result_.patch[i])].push_back(result_.distance[i]);
+    const std::vector<std::vector<double>> distances = counted_distances_by_patch();
     for (Patch& leaf : result_.patches) {
       if (!leaf.is_leaf()) continue;
       const std::vector<double>& own = distances[static_cast<std::size_t>(leaf.id)];

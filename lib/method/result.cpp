@@ -11,6 +11,14 @@ std::size_t Result::leaf_count() const {
   return static_cast<std::size_t>(std::count_if(patches.begin(), patches.end(), [](const Patch& p) { return p.is_leaf(); }));
 }
 
+std::vector<double> Result::counted_distances() const {
+  std::vector<double> counted;
+  counted.reserve(distance.size());
+  for (std::size_t i = 0; i < distance.size(); ++i)
+    if (!left_out(i)) counted.push_back(distance[i]);
+  return counted;
+}
+
 std::vector<std::int32_t> Result::point_flags() const {
   std::vector<std::int32_t> flags(u.size(), 0);
   auto set = [&](const std::vector<char>& per_point, PointFlag bit) {

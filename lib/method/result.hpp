@@ -75,6 +75,8 @@ struct Result {
   }
   /// Whether point i was cropped (it has no (u,v)).
   bool is_cropped(std::size_t i) const { return i < cropped.size() && cropped[i]; }
+  /// The distances the statistics count (those of points not left_out), in input order.
+  std::vector<double> counted_distances() const;
   /// Per point, the PointFlag bits that hold for it.
   std::vector<std::int32_t> point_flags() const;
 

@@ -108,11 +108,7 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
     if (p.is_leaf()) leaves.push_back(p.rect);
   write_png(base + "domain.png", draw_parameter_domain(result.u, result.v, mesh.triangles, per_axis.triangles, mesh.suspicious, leaves, kDomainSize));
   // The distances the statistics count: not those of points far outside the body or cropped.
-  std::vector<double> counted;
-  counted.reserve(result.distance.size());
-  for (std::size_t i = 0; i < result.distance.size(); ++i)
-    if (!result.left_out(i)) counted.push_back(result.distance[i]);
-  write_png(base + "distances.png", draw_distance_histogram(counted, distances.overall, distances.tolerance, kHistogramWidth, kHistogramHeight));
+  write_png(base + "distances.png", draw_distance_histogram(result.counted_distances(), distances.overall, distances.tolerance, kHistogramWidth, kHistogramHeight));
   const double picture_seconds = clock.lap();
 
   JsonWriter json;

@@ -177,6 +177,10 @@ void the_validation_and_the_files_leave_cropped_points_out(void**) {
   // Distance statistics
   const dbs::DistanceReport d = dbs::distance_statistics(r.result, 0.0);
   assert_int_equal(d.overall.count, kept);
+  // what the report's histogram draws: the kept points' distances only, all finite
+  const std::vector<double> counted = r.result.counted_distances();
+  assert_int_equal(counted.size(), kept);
+  for (double x : counted) assert_true(std::isfinite(x));
   assert_true(std::abs(d.overall.mean - r.result.mean_distance) <= 1e-12 * r.result.mean_distance);
   // The Delaunay mesh: over the kept points only, in the cloud's vertex numbers.
   const dbs::ValidationMesh mesh = dbs::build_validation_mesh(r.result, cloud, 1);
