@@ -144,6 +144,22 @@ bool isolated(const CloudIndex& index, const std::vector<Vec3>& points, std::siz
   return d2.size() < needed + 1 || d2.back() > r * r;
 }
 
+/// Whether at least half of the kRepairNeighbours nearest points of point i are far from the
+/// surface too: a sheet the surfaces missed, however sparsely sampled, not a lone outlier
+/// (whose nearest points are those of the surface it sticks out of).
+bool amid_far_points(const CloudIndex& index, const std::vector<Vec3>& points, std::size_t i, const std::vector<char>& far) {
+  std::vector<std::size_t> ids;
+  std::vector<double> d2;
+  index.knn(points[i], kRepairNeighbours + 1, ids, d2);
+  std::size_t others = 0, count = 0;
+  for (std::size_t m : ids) {
+    if (m == i) continue;
+    ++count;
+    others += far[m] ? 1 : 0;
+  }
+  return count > 0 && 2 * others >= count;
+}
+
 /// The trust radius of point i's step towards its foot: kRepairTrust times the mean (u,v)
 /// distance to its nearest points in 3D (`neighbours`), so that a step cannot carry it past
 /// them (0 without neighbours).
@@ -216,11 +232,34 @@ bool at_cloud_border(const CloudIndex& index, const std::vector<Vec3>& points, s
   return offset.norm() > kBorderOffset * spread;
 }
 
+/// The wide reach of the repair (RepairReach::Wide): the suspect points and the far ones,
+/// widened by kWideRings rings of candidates (a candidate joins when one of its
+/// kRepairNeighbours nearest points is taken or far), the cloud's border included. 1 for a
+/// point to repair (far points are repaired anyway).
+std::vector<char> widened(const CloudIndex& index, const std::vector<Vec3>& points, const std::vector<std::size_t>& candidates, const std::vector<char>& suspect,
+                          const std::vector<char>& far, int threads) {
+  std::vector<std::vector<std::size_t>> near(candidates.size());
+  parallel_for(candidates.size(), threads, [&](std::size_t c) {
+    std::vector<double> d2;
+    index.knn(points[candidates[c]], kRepairNeighbours + 1, near[c], d2);
+  });
+  std::vector<char> taken = suspect;
+  for (int ring = 0; ring < kWideRings; ++ring) {
+    const std::vector<char> before = taken;
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+      const std::size_t i = candidates[c];
+      if (before[i] || far[i]) continue;
+      taken[i] = std::any_of(near[c].begin(), near[c].end(), [&](std::size_t m) { return before[m] || far[m]; }) ? 1 : 0;
+    }
+  }
+  return taken;
+}
+
 /// The suspect points among `candidates` (see doubtful_points), `state` and `far` indexed
 /// like `points` (entries of other points unused), the ring of their kRepairNeighbours
 /// nearest points in `index` included: 1 for a point to repair.
 std::vector<char> suspect_points(const CloudIndex& index, const std::vector<Vec3>& points, const std::vector<std::size_t>& candidates, const std::vector<std::int8_t>& state,
-                                 const std::vector<char>& far, int threads) {
+                                 const std::vector<char>& far, int threads, RepairReach reach) {
   const std::size_t n = points.size();
   std::vector<char> doubtful(n, 0), suspect(n, 0);
   for (std::size_t i : candidates) doubtful[i] = far[i] || state[i] != kFoldOk;
@@ -243,6 +282,7 @@ std::vector<char> suspect_points(const CloudIndex& index, const std::vector<Vec3
     if (state[i] != kFoldScrambled && static_cast<double>(others) < kSuspectClusterShare * static_cast<double>(ids.size() - 1)) return;
     suspect[i] = at_cloud_border(index, points, i) ? 0 : 1;
   });
+  if (reach == RepairReach::Wide) return widened(index, points, candidates, suspect, far, threads);
   // One ring more: the fill's fixed points around a doubtful region are then sound ones, not
   // its own disturbed edge (the cloud's border stays out, as above).
   std::vector<std::vector<std::size_t>> ring(candidates.size());
@@ -272,7 +312,8 @@ std::vector<char> far_from_surface(const Result& result) {
 
 }  // namespace
 
-std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter) {
+std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter,
+                                  RepairReach reach) {
   const std::size_t n = points.size();
   std::vector<char> none(n, 0);
   if (std::find_if(state.begin(), state.end(), [](std::int8_t s) { return s != kFoldOk; }) == state.end()) return none;
@@ -281,14 +322,14 @@ std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>&
     if (state.size() != n) fail(ErrorCode::InvalidArgument, "doubtful_points: " + std::to_string(state.size()) + " verdicts for " + std::to_string(n) + " points");
     std::vector<std::size_t> all(n);
     for (std::size_t i = 0; i < n; ++i) all[i] = i;
-    return suspect_points(CloudIndex(points), points, all, state, far, threads);
+    return suspect_points(CloudIndex(points), points, all, state, far, threads, reach);
   }
   if (state.size() != judged.size()) fail(ErrorCode::InvalidArgument, "doubtful_points: " + std::to_string(state.size()) + " verdicts for " + std::to_string(judged.size()) + " judged points");
   // The suspects of the judged points among themselves (the sparser cloud the verdicts are
   // of), then each point takes the flag of its nearest judged point.
   std::vector<std::int8_t> global(n, kFoldOk);
   for (std::size_t k = 0; k < judged.size(); ++k) global[judged[k]] = state[k];
-  const std::vector<char> suspect = suspect_points(CloudIndex(points, judged), points, judged, global, far, threads);
+  const std::vector<char> suspect = suspect_points(CloudIndex(points, judged), points, judged, global, far, threads, reach);
   std::vector<std::int8_t> flags(judged.size());
   bool any = false;
   for (std::size_t k = 0; k < judged.size(); ++k) {
@@ -325,7 +366,8 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
   std::vector<char> outlier(n, 0);
   for (std::size_t i = 0; i < n; ++i) outlier[i] = outside(i) ? 1 : 0;
   parallel_for(far.size(), threads, [&](std::size_t f) {
-    if (is_far[far[f]]) outlier[far[f]] = isolated(index, points, far[f], result.distance[far[f]], result.length_scale) ? 1 : 0;
+    const std::size_t i = far[f];
+    if (is_far[i]) outlier[i] = isolated(index, points, i, result.distance[i], result.length_scale) && !amid_far_points(index, points, i, is_far) ? 1 : 0;
   });
   far.erase(std::remove_if(far.begin(), far.end(), [&](std::size_t i) { return outlier[i] != 0; }), far.end());
   if (far.empty()) return {};

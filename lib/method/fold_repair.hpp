@@ -17,7 +17,10 @@
 // "Far" is more than kRepairFactor times the accuracy target used (which the noise floor keeps
 // above the noise, so a noisy cloud's points are not taken for unreached ones) and more than
 // kRepairSpacings cloud spacings. A far point that stands alone (a gross outlier) is neither
-// repaired nor fitted. Measured on the hard shapes of dbs-bench-folds: the mushroom goes from
+// repaired nor fitted: few points around it for the cloud's spacing, and most of its nearest
+// points not far (a sparsely sampled sheet the surfaces missed, such as a mushroom's cap seen
+// at a tenth of the plate's density, is not alone: it was taken for outliers and held its
+// misplaced (u,v) amid the fill). Measured on the hard shapes of dbs-bench-folds: the mushroom goes from
 // 7.2% to 0.12% folded reference triangles and its mean distance from 0.0208 to 0.0047, the
 // tall dome from 8.2% to 0.18% and 0.0183 to 0.011 (the fill alone, without the refit, raised
 // their mean distance by 17% and 43%); at 2.5 times the points, where few points are far,
@@ -44,6 +47,18 @@ constexpr int kMaxRefitNodes = 441;             ///< leaves with more interior g
 constexpr double kSuspectClusterShare = 0.75;    ///< an undecided point is repaired when at least this share of its neighbours are doubtful too
 constexpr double kBorderOffset = 0.4;           ///< ... and it is inside the cloud: its neighbours' centroid within this x their mean distance
 
+constexpr int kWideRings = 3;                   ///< rings of nearest points around the doubtful and far points in the wide reach
+
+/// How far around the doubtful points the repair reaches. Narrow: the doubtful points and one
+/// ring of their nearest points, never at the cloud's border. Wide: the doubtful and the far
+/// points and kWideRings rings around them, border included: where the surfaces missed a
+/// whole feature (under a mushroom's cap) the narrow fill is held by points that are
+/// themselves misplaced, and only a region whose rim lies in sound territory unfolds; on a
+/// tall, narrow feature the wide fill crushes more than it unfolds (a harmonic map's (u,v)
+/// shrink up a tube). The driver tries the wide reach when the narrow one leaves points the
+/// fold measure doubts, and keeps the one it judges better.
+enum class RepairReach { Narrow, Wide };
+
 /// What repair_folds did.
 struct Repair {
   std::size_t repaired = 0;        ///< points given a new (u,v)
@@ -53,11 +68,13 @@ struct Repair {
 /// The points the repair should take besides the far ones, from the fold measure's verdicts
 /// `state` on the points `judged` (indices into `points`; empty: `state` is of every point):
 /// the folded, collapsed and scrambled points, undecided points amid doubtful ones (never at
-/// the cloud's border), and the ring of their kRepairNeighbours nearest points. On a sampled
+/// the cloud's border), and the ring of their kRepairNeighbours nearest points (`reach`
+/// Narrow), or those and the far points widened as RepairReach::Wide says. On a sampled
 /// cloud they are found among the judged points and every point takes the flag of its
 /// nearest judged point (a query per point only when there is a suspect). Points far outside
 /// the body are never taken. Deterministic for any thread count.
-std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter = nullptr);
+std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter = nullptr,
+                                  RepairReach reach = RepairReach::Narrow);
 
 /// Repairs the far points of `result` (parameters of `points`, which it was made from) and
 /// those flagged in `suspect` (doubtful_points; empty: far points only) in place, setting

@@ -20,6 +20,7 @@
 #include "number_text.hpp"
 #include "parallel.hpp"
 #include "progress.hpp"
+#include "repair_snapshot.hpp"
 #include "subcloud.hpp"
 #include "robust_loss.hpp"
 #include "subdivide.hpp"
@@ -135,13 +136,30 @@ class Driver {
     result_.stage_seconds.folds = seconds_since(folds_start);
     result_.repaired.assign(points_.size(), 0);
     if (options_.repair) {
-      const auto repair_start = Clock::now();
-      const bool moved = repair(judged, folds);
+      // The narrow repair first; where it leaves points the measure doubts, the wide one from
+      // the same start, kept only when the measure doubts fewer points after it (fold_repair.hpp).
+      auto repair_start = Clock::now();
+      const RepairSnapshot unrepaired(result_);
+      const FoldMeasure first = folds;
+      const bool moved = repair(judged, first, RepairReach::Narrow);
       result_.stage_seconds.parameterize += seconds_since(repair_start);
       if (moved) {
         folds_start = Clock::now();
         folds = judge_folds(judged);
         result_.stage_seconds.folds += seconds_since(folds_start);
+      }
+      const std::size_t narrow_doubts = doubted_points(folds);
+      if (narrow_doubts > 0) {
+        const RepairSnapshot narrow(result_);
+        unrepaired.restore(result_);
+        repair_start = Clock::now();
+        const bool wide_moved = repair(judged, first, RepairReach::Wide);
+        result_.stage_seconds.parameterize += seconds_since(repair_start);
+        folds_start = Clock::now();
+        FoldMeasure wide = wide_moved ? judge_folds(judged) : first;
+        result_.stage_seconds.folds += seconds_since(folds_start);
+        if (doubted_points(wide) < narrow_doubts) folds = std::move(wide);
+        else narrow.restore(result_);
       }
     }
     place_far_points();
@@ -365,13 +383,18 @@ class Driver {
     leaf.accurate = leaf.error <= result_.accuracy;
   }
 
+  /// Points the fold measure judged folded, collapsed or scrambled: what the repair is for.
+  static std::size_t doubted_points(const FoldMeasure& folds) {
+    return static_cast<std::size_t>(std::count_if(folds.state.begin(), folds.state.end(), [](std::int8_t s) { return s == kFolded || s == kFoldCollapsed || s == kFoldScrambled; }));
+  }
+
   /// The last-resort repair (fold_repair.hpp); the refitted leaves are judged again on the
   /// points they parameterize, at the distances of their new surfaces.
   /// `folds` is the fold measure of the points `judged` (all of them when empty), as
   /// judge_folds gives it; every point takes the verdict of the nearest judged point. True
   /// when the repair moved a point.
-  bool repair(const std::vector<std::size_t>& judged, const FoldMeasure& folds) {
-    const Repair repair = repair_folds(result_, points_, doubtful_points(result_, points_, judged, folds.state, threads_, &meter_), threads_);
+  bool repair(const std::vector<std::size_t>& judged, const FoldMeasure& folds, RepairReach reach) {
+    const Repair repair = repair_folds(result_, points_, doubtful_points(result_, points_, judged, folds.state, threads_, &meter_, reach), threads_);
     result_.repaired_points = repair.repaired;
     if (repair.refitted.empty()) return repair.repaired > 0;
     const std::vector<std::vector<double>> distances = counted_distances_by_patch();

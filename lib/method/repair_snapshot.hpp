@@ -1,0 +1,34 @@
+// What the last-resort repair may change in a result, saved so that one repair can be tried
+// and undone: every point's (u,v), distance, patch, level and flag, and every patch's surface,
+// grid and judged figures (a refit changes a leaf's grid). The subclouds, which the repair
+// never touches and which hold most of a result's memory, are not copied.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "result.hpp"
+
+namespace dbs {
+
+class RepairSnapshot {
+ public:
+  explicit RepairSnapshot(const Result& result);
+  /// Puts `result` (the one the snapshot was taken of, repaired since) back as it was.
+  void restore(Result& result) const;
+
+ private:
+  struct PatchState {
+    BaseSurface surface;
+    Grid grid;
+    double mean_distance, max_distance, error;
+    bool accurate;
+  };
+  std::vector<double> u_, v_, distance_;
+  std::vector<std::int32_t> patch_, level_;
+  std::vector<char> repaired_;
+  std::size_t repaired_points_;
+  std::vector<PatchState> patches_;
+};
+
+}  // namespace dbs
