@@ -21,21 +21,40 @@ summary=()
 failed=0
 
 # step NAME COMMAND...: runs one step, records its outcome and duration (and what the step
-# put in step_note: how many tests it ran).
+# put in step_note: how many tests it ran). Its output is also kept in build-ci-logs/, so that
+# the end of the run can repeat why a step failed: a CI log is often read from its end only.
 step_note=""
+step_logs="$repo/build-ci-logs"
+rm -rf "$step_logs" && mkdir -p "$step_logs"
+failed_steps=()
 step() {
   local name="$1"
   shift
   local start=$SECONDS
+  local log
+  log="$step_logs/step-$(printf '%02d' "${#summary[@]}").log"
   step_note=""
   echo
   echo "==== $name"
-  if "$@"; then
+  # (a process substitution, not a pipe: the step runs in this shell and can set step_note)
+  if "$@" > >(tee "$log") 2>&1; then
     summary+=("ok      $(printf '%4d' $((SECONDS - start))) s  $name${step_note:+: $step_note}")
   else
     summary+=("FAILED  $(printf '%4d' $((SECONDS - start))) s  $name${step_note:+: $step_note}")
+    failed_steps+=("$name"$'\t'"$log")
     failed=1
   fi
+}
+
+# why_failed: for each failed step, the last lines of its output that name a failure.
+why_failed() {
+  local entry name log
+  for entry in "${failed_steps[@]}"; do
+    name="${entry%%$'\t'*}"
+    log="${entry#*$'\t'}"
+    echo "---- why \"$name\" failed (the last lines of its output naming a failure; all of it above and in $log)"
+    grep -E 'FAILED|Failed|ERROR|error:|Error |SUMMARY:|deadly signal|broke its promise|out-of-memory|ALARM|timeout|leak|Assertion' "$log" | tail -15
+  done
 }
 
 # run_ctest DIR [CTEST ARGS...]: the suite of DIR, its closing lines shown; the number of
@@ -141,4 +160,5 @@ echo
 echo "==== summary"
 printf '%s\n' "${summary[@]}"
 echo "total   $(printf '%4d' $((SECONDS - suite_start))) s"
+why_failed
 exit "$failed"
