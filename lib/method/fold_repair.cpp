@@ -232,19 +232,19 @@ bool at_cloud_border(const CloudIndex& index, const std::vector<Vec3>& points, s
   return offset.norm() > kBorderOffset * spread;
 }
 
-/// The wide reach of the repair (RepairReach::Wide): the suspect points and the far ones,
-/// widened by kWideRings rings of candidates (a candidate joins when one of its
-/// kRepairNeighbours nearest points is taken or far), the cloud's border included. 1 for a
-/// point to repair (far points are repaired anyway).
+/// A wide reach of the repair (RepairReach): the suspect points and the far ones, widened by
+/// `rings` rings of candidates (a candidate joins when one of its kRepairNeighbours nearest
+/// points is taken or far), the cloud's border included. 1 for a point to repair (far points
+/// are repaired anyway).
 std::vector<char> widened(const CloudIndex& index, const std::vector<Vec3>& points, const std::vector<std::size_t>& candidates, const std::vector<char>& suspect,
-                          const std::vector<char>& far, int threads) {
+                          const std::vector<char>& far, int rings, int threads) {
   std::vector<std::vector<std::size_t>> near(candidates.size());
   parallel_for(candidates.size(), threads, [&](std::size_t c) {
     std::vector<double> d2;
     index.knn(points[candidates[c]], kRepairNeighbours + 1, near[c], d2);
   });
   std::vector<char> taken = suspect;
-  for (int ring = 0; ring < kWideRings; ++ring) {
+  for (int ring = 0; ring < rings; ++ring) {
     const std::vector<char> before = taken;
     for (std::size_t c = 0; c < candidates.size(); ++c) {
       const std::size_t i = candidates[c];
@@ -282,7 +282,7 @@ std::vector<char> suspect_points(const CloudIndex& index, const std::vector<Vec3
     if (state[i] != kFoldScrambled && static_cast<double>(others) < kSuspectClusterShare * static_cast<double>(ids.size() - 1)) return;
     suspect[i] = at_cloud_border(index, points, i) ? 0 : 1;
   });
-  if (reach == RepairReach::Wide) return widened(index, points, candidates, suspect, far, threads);
+  if (reach.wide_rings > 0) return widened(index, points, candidates, suspect, far, reach.wide_rings, threads);
   // One ring more: the fill's fixed points around a doubtful region are then sound ones, not
   // its own disturbed edge (the cloud's border stays out, as above).
   std::vector<std::vector<std::size_t>> ring(candidates.size());

@@ -47,17 +47,19 @@ constexpr int kMaxRefitNodes = 441;             ///< leaves with more interior g
 constexpr double kSuspectClusterShare = 0.75;    ///< an undecided point is repaired when at least this share of its neighbours are doubtful too
 constexpr double kBorderOffset = 0.4;           ///< ... and it is inside the cloud: its neighbours' centroid within this x their mean distance
 
-constexpr int kWideRings = 3;                   ///< rings of nearest points around the doubtful and far points in the wide reach
+constexpr int kMaxWideRings = 2;                ///< the driver tries wide reaches of 1 .. this many rings
 
-/// How far around the doubtful points the repair reaches. Narrow: the doubtful points and one
-/// ring of their nearest points, never at the cloud's border. Wide: the doubtful and the far
-/// points and kWideRings rings around them, border included: where the surfaces missed a
-/// whole feature (under a mushroom's cap) the narrow fill is held by points that are
-/// themselves misplaced, and only a region whose rim lies in sound territory unfolds; on a
-/// tall, narrow feature the wide fill crushes more than it unfolds (a harmonic map's (u,v)
-/// shrink up a tube). The driver tries the wide reach when the narrow one leaves points the
-/// fold measure doubts, and keeps the one it judges better.
-enum class RepairReach { Narrow, Wide };
+/// How far around the doubtful points the repair reaches. Narrow (wide_rings 0): the doubtful
+/// points and one ring of their nearest points, never at the cloud's border. Wide (wide_rings
+/// k > 0): the doubtful and the far points and k rings of nearest points around them, border
+/// included: where the surfaces missed a whole feature (under a mushroom's cap) the narrow
+/// fill is held by points that are themselves misplaced, and only a region whose rim lies in
+/// sound territory unfolds; on a tall, narrow feature a wide fill crushes more than it unfolds
+/// (a harmonic map's (u,v) shrink up a tube). The driver tries the wide reaches when the
+/// narrow one leaves points the fold measure doubts, and keeps the one it judges best.
+struct RepairReach {
+  int wide_rings = 0;
+};
 
 /// What repair_folds did.
 struct Repair {
@@ -68,13 +70,13 @@ struct Repair {
 /// The points the repair should take besides the far ones, from the fold measure's verdicts
 /// `state` on the points `judged` (indices into `points`; empty: `state` is of every point):
 /// the folded, collapsed and scrambled points, undecided points amid doubtful ones (never at
-/// the cloud's border), and the ring of their kRepairNeighbours nearest points (`reach`
-/// Narrow), or those and the far points widened as RepairReach::Wide says. On a sampled
+/// the cloud's border), and the ring of their kRepairNeighbours nearest points (the narrow
+/// `reach`), or those and the far points widened as a wide RepairReach says. On a sampled
 /// cloud they are found among the judged points and every point takes the flag of its
 /// nearest judged point (a query per point only when there is a suspect). Points far outside
 /// the body are never taken. Deterministic for any thread count.
 std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter = nullptr,
-                                  RepairReach reach = RepairReach::Narrow);
+                                  RepairReach reach = {});
 
 /// Repairs the far points of `result` (parameters of `points`, which it was made from) and
 /// those flagged in `suspect` (doubtful_points; empty: far points only) in place, setting

@@ -136,30 +136,36 @@ class Driver {
     result_.stage_seconds.folds = seconds_since(folds_start);
     result_.repaired.assign(points_.size(), 0);
     if (options_.repair) {
-      // The narrow repair first; where it leaves points the measure doubts, the wide one from
-      // the same start, kept only when the measure doubts fewer points after it (fold_repair.hpp).
+      // The narrow repair first; where it leaves points the measure doubts, the wide ones from
+      // the same start, each kept only when the measure doubts fewer points after it than
+      // after the best so far (fold_repair.hpp).
       auto repair_start = Clock::now();
       const RepairSnapshot unrepaired(result_);
       const FoldMeasure first = folds;
-      const bool moved = repair(judged, first, RepairReach::Narrow);
+      const bool moved = repair(judged, first, RepairReach{});
       result_.stage_seconds.parameterize += seconds_since(repair_start);
       if (moved) {
         folds_start = Clock::now();
         folds = judge_folds(judged);
         result_.stage_seconds.folds += seconds_since(folds_start);
       }
-      const std::size_t narrow_doubts = doubted_points(folds);
-      if (narrow_doubts > 0) {
-        const RepairSnapshot narrow(result_);
+      std::size_t best_doubts = doubted_points(folds);
+      for (int rings = 1; rings <= kMaxWideRings && best_doubts > 0; ++rings) {
+        const RepairSnapshot best(result_);
         unrepaired.restore(result_);
         repair_start = Clock::now();
-        const bool wide_moved = repair(judged, first, RepairReach::Wide);
+        const bool wide_moved = repair(judged, first, RepairReach{rings});
         result_.stage_seconds.parameterize += seconds_since(repair_start);
         folds_start = Clock::now();
         FoldMeasure wide = wide_moved ? judge_folds(judged) : first;
         result_.stage_seconds.folds += seconds_since(folds_start);
-        if (doubted_points(wide) < narrow_doubts) folds = std::move(wide);
-        else narrow.restore(result_);
+        const std::size_t doubts = doubted_points(wide);
+        if (doubts < best_doubts) {
+          folds = std::move(wide);
+          best_doubts = doubts;
+        } else {
+          best.restore(result_);
+        }
       }
     }
     place_far_points();

@@ -213,9 +213,9 @@ void noise_does_not_change_the_level_count(void**) {
 void hard_shapes_stay_within_their_bounds(void**) {
   // Folded reference triangles and mean distance with the default options (the repair on,
   // since 0.4): a little above today's figures, mushroom 0.06% / 0.0049, tall dome 0.13% /
-  // 0.011, fingers 0.26% / 0.0036 (2.76% / 0.0060 before the stretch balance of the fill), open box 0.18% / 0.0007, cone 0.16% / 0.00104 (0.26% /
-  // 0.00071 before the wide reach of the repair, which trades the mean distance of the points it
-  // refills for folds; 0.45% / 0.00082 before the repair took the points the fold measure
+  // 0.011, fingers 0.26% / 0.0036 (2.76% / 0.0060 before the stretch balance of the fill), open box 0.18% / 0.0007, cone 0.21% / 0.00081 (0.26% /
+  // 0.00071 before the wide reaches of the repair, which trade some mean distance of the points
+  // they refill for folds; 0.45% / 0.00082 before the repair took the points the fold measure
   // doubts), sphere cap 0.06% / 0.0031. The same without the repair (the default of 0.3): 7.23% / 0.0208, 8.24% /
   // 0.0183, 3.62% / 0.0080, 0.18% / 0.0021, 0.77% / 0.0014, 0.10% / 0.0033; before the guard,
   // the seam correction and the seam-aware assignment (0.2): 9.65%, 7.37%, 4.08%, 0.21%,
@@ -225,7 +225,7 @@ void hard_shapes_stay_within_their_bounds(void**) {
     const char* name;
     double max_share, max_mean;
   } bounds[] = {{"mushroom", 0.002, 0.006}, {"tall-dome", 0.003, 0.013}, {"fingers", 0.004, 0.0045},
-                {"open-box", 0.0025, 0.001}, {"cone", 0.0025, 0.0012}, {"sphere-cap", 0.003, 0.0034}};
+                {"open-box", 0.0025, 0.001}, {"cone", 0.0025, 0.001}, {"sphere-cap", 0.003, 0.0034}};
   dbs::Options without;
   without.repair = 0;
   for (const auto& b : bounds) {
@@ -289,16 +289,16 @@ void repair_at_scan_density(void**) {
   // The two hardest shapes at 2.5 times the points (about 10,000, the size of the scans the
   // fold-free work is judged on), where the surfaces come close to more of the cloud but
   // pleat between leaves and scatter the points of steep walls in (u,v). Today: mushroom
-  // 0.70% folded (4.32% without the repair; 1.25% with the narrow reach alone, 3.00% with the
-  // repair of far points only, before the normal change), tall dome 1.76% (5.28%; 1.81%,
+  // 0.67% folded (4.32% without the repair; 1.25% with the narrow reach alone, 3.00% with the
+  // repair of far points only, before the normal change), tall dome 1.55% (5.28%; 1.81%,
   // 4.94%); the repair must keep at least half of them off and not raise the mean distance
-  // above the one without it (mushroom 0.00229 against 0.0035, dome 0.00092 against 0.00118).
+  // above the one without it (mushroom 0.00149 against 0.0035, dome 0.00090 against 0.00118).
   // The fingers, whose tips the harmonic fill crushed (2.25%), are at 0.12% (0.58% with the
   // narrow reach, since the stretch balance).
   const struct {
     const char* name;
     double max_share;
-  } bounds[] = {{"mushroom", 0.009}, {"tall-dome", 0.019}, {"fingers", 0.002}};
+  } bounds[] = {{"mushroom", 0.008}, {"tall-dome", 0.017}, {"fingers", 0.002}};
   dbs::Options without;
   without.repair = 0;
   for (const auto& b : bounds) {
