@@ -89,7 +89,7 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
       patch.damped_nodes += damped;
       if (damped == 0) break;
     }
-    const SurfaceProjector surface_projector(patch.surface, FootPrecision::Distance);
+    const SurfaceProjector surface_projector(patch.surface, FootPrecision::Measure);
     // A grid that can still grow is first judged on a pilot of about kPilotPoints of the
     // sample: far above the target, it grows without the whole sample being measured.
     const std::size_t sampled = (patch.subcloud.size() + stride - 1) / stride;

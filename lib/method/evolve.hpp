@@ -51,7 +51,7 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
 /// unit per point.
 void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean, double& out_max,
                        LossKind loss = LossKind::None, double loss_scale = 0.0, double* out_loss_mean = nullptr, WorkMeter* meter = nullptr);
-/// The same with a projector onto the surface (FootPrecision::Distance), built once for
+/// The same with a projector onto the surface (FootPrecision::Distance or Measure), built once for
 /// several measurements of one surface.
 void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean,
                        double& out_max, LossKind loss = LossKind::None, double loss_scale = 0.0, double* out_loss_mean = nullptr, WorkMeter* meter = nullptr);
