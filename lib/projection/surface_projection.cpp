@@ -101,9 +101,13 @@ struct SurfaceProjector::Impl {
       if (settle_creases && halving > 0 && step.norm() <= tolerance) return 0.0;
       const Vec2 x(clamp_unit(it.x.x() + step.x()), clamp_unit(it.x.y() + step.y()));
       if (x == it.x) return 0.0;
-      const Iterate trial = at(q, x);
-      if (trial.f <= it.f || (trusted && trial.f <= it.f + rounding)) {
-        it = trial;
+      // A halved trial is judged on the point alone (S without its derivatives, the same
+      // bits as eval_derivs' point): on a crease most of them are refused.
+      Iterate trial;
+      if (halving == 0) trial = at(q, x);
+      const double f = halving == 0 ? trial.f : (surface.eval(x.x(), x.y()) - q).squaredNorm();
+      if (f <= it.f || (trusted && f <= it.f + rounding)) {
+        it = halving == 0 ? trial : at(q, x);
         return step.norm();
       }
       if (trusted) return 0.0;
