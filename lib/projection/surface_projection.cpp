@@ -232,15 +232,24 @@ SurfaceProjector::SurfaceProjector(const BaseSurface& surface, FootPrecision pre
 
 SurfaceProjector::~SurfaceProjector() = default;
 
-double SurfaceProjector::sample_distance(const Vec3& q) const {
-  if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::sample_distance: the point is not finite");
-  return (impl_->grid[impl_->index.nearest(q)] - q).norm();
+double SurfaceProjector::sample_distance(const Vec3& q) const { return nearest_sample(q).distance; }
+
+SurfaceProjector::Sample SurfaceProjector::nearest_sample(const Vec3& q) const {
+  if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::nearest_sample: the point is not finite");
+  const std::size_t k = impl_->index.nearest(q);
+  return {k, (impl_->grid[k] - q).norm()};
 }
 
 Foot SurfaceProjector::project(const Vec3& q) const {
   if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::project: the point is not finite");
+  return project(q, Sample{impl_->index.nearest(q), 0.0});
+}
+
+Foot SurfaceProjector::project(const Vec3& q, const Sample& nearest) const {
+  if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::project: the point is not finite");
   const Impl& m = *impl_;
-  const std::size_t k = m.index.nearest(q);
+  if (nearest.index >= m.grid.size()) fail(ErrorCode::OutOfRange, "SurfaceProjector::project: sample " + std::to_string(nearest.index) + " does not exist");
+  const std::size_t k = nearest.index;
   const Vec2 start(static_cast<double>(k % m.samples) / (m.samples - 1), static_cast<double>(k / m.samples) / (m.samples - 1));
   std::array<bool, 2> held{{false, false}};
   Iterate it = m.descend(q, m.at(q, start), held);

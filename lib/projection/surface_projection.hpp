@@ -44,10 +44,18 @@ class SurfaceProjector {
   SurfaceProjector& operator=(const SurfaceProjector&) = delete;
 
   Foot project(const Vec3& q) const;
-  /// Distance from q to the nearest surface sample: an upper bound of the distance to the
-  /// surface (and of project(q).distance, the descent starting there), at the cost of one
-  /// k-d tree query.
+  /// The surface sample nearest q (one k-d tree query): its index, and its distance to q,
+  /// an upper bound of the distance to the surface (and of project(q).distance, the
+  /// descent starting there).
+  struct Sample {
+    std::size_t index;
+    double distance;
+  };
+  Sample nearest_sample(const Vec3& q) const;
+  /// nearest_sample(q).distance.
   double sample_distance(const Vec3& q) const;
+  /// project(q) from nearest_sample(q) found before: the same foot, without its query.
+  Foot project(const Vec3& q, const Sample& nearest) const;
 
  private:
   struct Impl;
