@@ -250,7 +250,13 @@ Foot SurfaceProjector::project(const Vec3& q, const Sample& nearest) const {
   const Impl& m = *impl_;
   if (nearest.index >= m.grid.size()) fail(ErrorCode::OutOfRange, "SurfaceProjector::project: sample " + std::to_string(nearest.index) + " does not exist");
   const std::size_t k = nearest.index;
-  const Vec2 start(static_cast<double>(k % m.samples) / (m.samples - 1), static_cast<double>(k / m.samples) / (m.samples - 1));
+  return project_from(q, Vec2(static_cast<double>(k % m.samples) / (m.samples - 1), static_cast<double>(k / m.samples) / (m.samples - 1)));
+}
+
+Foot SurfaceProjector::project_from(const Vec3& q, const Vec2& start) const {
+  if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::project_from: the point is not finite");
+  if (!(start.x() >= 0.0 && start.x() <= 1.0 && start.y() >= 0.0 && start.y() <= 1.0)) fail(ErrorCode::OutOfRange, "SurfaceProjector::project_from: the start is outside [0,1]^2");
+  const Impl& m = *impl_;
   std::array<bool, 2> held{{false, false}};
   Iterate it = m.descend(q, m.at(q, start), held);
   Foot foot;

@@ -56,6 +56,10 @@ class SurfaceProjector {
   double sample_distance(const Vec3& q) const;
   /// project(q) from nearest_sample(q) found before: the same foot, without its query.
   Foot project(const Vec3& q, const Sample& nearest) const;
+  /// The descent from `start` in [0,1]^2 (a foot of q found before on a nearby surface)
+  /// instead of from the nearest sample: one k-d query fewer and fewer steps, but the
+  /// local foot nearest the start, which is the nearest foot only while the start is near it.
+  Foot project_from(const Vec3& q, const Vec2& start) const;
 
  private:
   struct Impl;
