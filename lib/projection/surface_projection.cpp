@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <string>
 
 #include "cloud_index.hpp"
@@ -62,14 +63,34 @@ struct SurfaceProjector::Impl {
   double tolerance;
   bool settle_creases;  // FootPrecision::Measure
   int samples;
-  std::vector<Vec3> grid;  // samples x samples, u fastest
-  CloudIndex index;
   /// Arc length of a side between two consecutive samples on it.
   std::array<double, 4> side_step;
 
-  Impl(const BaseSurface& s, double t, bool settle, int n) : surface(s), tolerance(t), settle_creases(settle), samples(n), grid(s.sample(n, n).points), index(grid) {
+  Impl(const BaseSurface& s, double t, bool settle, int n) : surface(s), tolerance(t), settle_creases(settle), samples(n) {
     for (int side = 0; side < 4; ++side) side_step[side] = surface.boundary().side(static_cast<Side>(side)).length() / (samples - 1);
   }
+
+  /// The samples x samples surface samples (u fastest) and their k-d tree, made on first
+  /// use: a descent from a start given (project_from) that stays inside needs neither, and
+  /// a growing grid's error sample mostly starts from its feet on the previous surface.
+  const std::vector<Vec3>& grid() const {
+    std::call_once(built, [&] {
+      grid_ = surface.sample(samples, samples).points;
+      index_ = std::make_unique<CloudIndex>(grid_);
+    });
+    return grid_;
+  }
+  const CloudIndex& index() const {
+    grid();
+    return *index_;
+  }
+
+ private:
+  mutable std::once_flag built;
+  mutable std::vector<Vec3> grid_;
+  mutable std::unique_ptr<CloudIndex> index_;
+
+ public:
 
   static Vec2 gradient(const Vec3& q, const Iterate& it) {
     const Vec3 r = it.s.p - q;
@@ -196,6 +217,7 @@ struct SurfaceProjector::Impl {
   /// samples are all farther than the best foot found plus half a sample step cannot win.
   Iterate nearest_on_boundary(const Vec3& q) const {
     const int last = samples - 1;
+    const std::vector<Vec3>& grid = this->grid();
     auto sample_point = [&](Side side, int k) -> const Vec3& {
       switch (side) {
         case Side::Bottom: return grid[k];
@@ -236,19 +258,19 @@ double SurfaceProjector::sample_distance(const Vec3& q) const { return nearest_s
 
 SurfaceProjector::Sample SurfaceProjector::nearest_sample(const Vec3& q) const {
   if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::nearest_sample: the point is not finite");
-  const std::size_t k = impl_->index.nearest(q);
-  return {k, (impl_->grid[k] - q).norm()};
+  const std::size_t k = impl_->index().nearest(q);
+  return {k, (impl_->grid()[k] - q).norm()};
 }
 
 Foot SurfaceProjector::project(const Vec3& q) const {
   if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::project: the point is not finite");
-  return project(q, Sample{impl_->index.nearest(q), 0.0});
+  return project(q, Sample{impl_->index().nearest(q), 0.0});
 }
 
 Foot SurfaceProjector::project(const Vec3& q, const Sample& nearest) const {
   if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::project: the point is not finite");
   const Impl& m = *impl_;
-  if (nearest.index >= m.grid.size()) fail(ErrorCode::OutOfRange, "SurfaceProjector::project: sample " + std::to_string(nearest.index) + " does not exist");
+  if (nearest.index >= m.grid().size()) fail(ErrorCode::OutOfRange, "SurfaceProjector::project: sample " + std::to_string(nearest.index) + " does not exist");
   const std::size_t k = nearest.index;
   return project_from(q, Vec2(static_cast<double>(k % m.samples) / (m.samples - 1), static_cast<double>(k / m.samples) / (m.samples - 1)));
 }
