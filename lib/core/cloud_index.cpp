@@ -4,6 +4,7 @@
 #include <nanoflann.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -67,6 +68,18 @@ nanoflann::SearchParams exact_search(bool sorted) { return nanoflann::SearchPara
 struct RayBoxBound {
   Vec3 p, u;
   double bound;
+  /// The axes u x (each coordinate axis), their absolute values and lengths: the same for
+  /// every box of one query, computed once.
+  std::array<Vec3, 3> cross, cross_abs;
+  std::array<double, 3> cross_length;
+
+  RayBoxBound(const Vec3& point, const Vec3& unit, double b) : p(point), u(unit), bound(b) {
+    cross = {{Vec3(0.0, -u.z(), u.y()), Vec3(u.z(), 0.0, -u.x()), Vec3(-u.y(), u.x(), 0.0)}};
+    for (int a = 0; a < 3; ++a) {
+      cross_abs[a] = cross[a].cwiseAbs();
+      cross_length[a] = cross[a].norm();
+    }
+  }
 
   bool may_hold(const Vec3& lo, const Vec3& hi) const {
     const Vec3 outside = (lo - p).cwiseMax(p - hi).cwiseMax(0.0);
@@ -77,16 +90,18 @@ struct RayBoxBound {
     const double r_min = std::sqrt(r2_min);
     const Vec3 half = 0.5 * (hi - lo);
     const Vec3 offset = 0.5 * (lo + hi) - p;
+    // rho_min only grows from axis to axis, so the box is refused as soon as one axis
+    // separates it far enough (the same answer as the maximum over all four).
     double rho_min = 0.0;
-    auto separate = [&](const Vec3& axis) {
-      const double length = axis.norm();
-      if (length > 0.0) rho_min = std::max(rho_min, (std::abs(axis.dot(offset)) - axis.cwiseAbs().dot(half)) / length);
-    };
-    separate(offset - offset.dot(u) * u);
-    separate(Vec3(0.0, -u.z(), u.y()));
-    separate(Vec3(u.z(), 0.0, -u.x()));
-    separate(Vec3(-u.y(), u.x(), 0.0));
-    return r_min * rho_min <= bound;
+    const Vec3 across = offset - offset.dot(u) * u;
+    const double across_length = across.norm();
+    if (across_length > 0.0) rho_min = std::max(rho_min, (std::abs(across.dot(offset)) - across.cwiseAbs().dot(half)) / across_length);
+    if (r_min * rho_min > bound) return false;
+    for (int a = 0; a < 3; ++a) {
+      if (cross_length[a] > 0.0) rho_min = std::max(rho_min, (std::abs(cross[a].dot(offset)) - cross_abs[a].dot(half)) / cross_length[a]);
+      if (r_min * rho_min > bound) return false;
+    }
+    return true;
   }
 };
 

@@ -1,6 +1,7 @@
 #include "evolve.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "grid_projection.hpp"
 #include "parallel.hpp"
@@ -35,7 +36,7 @@ void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& poin
 }
 
 void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean,
-                       double& out_max, LossKind loss, double loss_scale, double* out_loss_mean, WorkMeter* meter) {
+                       double& out_max, LossKind loss, double loss_scale, double* out_loss_mean, WorkMeter* meter, std::vector<Vec2>* feet, std::size_t feet_step) {
   stride = std::max<std::size_t>(stride, 1);
   const std::size_t count = (indices.size() + stride - 1) / stride;
   out_mean = 0.0;
@@ -44,7 +45,16 @@ void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3
   if (count == 0) return;
   std::vector<double> distance(count);
   metered_for(meter, count, threads, [&](std::size_t k) {
-    distance[k] = projector.project(points[indices[k * stride]]).distance;
+    const Vec3& q = points[indices[k * stride]];
+    if (feet) {
+      // Each point writes only its own foot.
+      Vec2& start = (*feet)[k * feet_step];
+      const Foot foot = std::isnan(start.x()) ? projector.project(q) : projector.project_from(q, start);
+      start = Vec2(foot.u, foot.v);
+      distance[k] = foot.distance;
+    } else {
+      distance[k] = projector.project(q).distance;
+    }
     count_work(meter);
   });
   // Summed serially in index order so the result does not depend on the thread count.
@@ -76,6 +86,9 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
   double mean = 0.0, max = 0.0, loss_mean = 0.0;
   RefinementCounts counts;
   double error = 0.0;
+  // Each sample point's foot on the last surface it was measured on: the surface moves
+  // little from one grid to the next, so the descent starts there (NaN: not measured yet).
+  std::vector<Vec2> feet;
   for (int grid = settings.initial_grid;; ++grid) {
     // Where the pleat guard held nodes back, the surface moves on from where it got to, along
     // its new normals, before the grid grows: an overhang or a steep wall is reached in a
@@ -89,21 +102,22 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
       patch.damped_nodes += damped;
       if (damped == 0) break;
     }
-    const SurfaceProjector surface_projector(patch.surface, FootPrecision::Distance);
+    const SurfaceProjector surface_projector(patch.surface, FootPrecision::Measure);
     // A grid that can still grow is first judged on a pilot of about kPilotPoints of the
     // sample: far above the target, it grows without the whole sample being measured.
     const std::size_t sampled = (patch.subcloud.size() + stride - 1) / stride;
+    if (feet.size() != sampled) feet.assign(sampled, Vec2(std::nan(""), std::nan("")));
     if (grid < settings.max_grid && sampled >= 2 * kPilotPoints) {
       double pilot_mean = 0.0, pilot_max = 0.0, pilot_loss = 0.0;
       measure_distances(surface_projector, points, patch.subcloud, stride * (sampled / kPilotPoints), settings.threads, pilot_mean, pilot_max, settings.error_loss,
-                        settings.error_loss_scale, robust ? &pilot_loss : nullptr, settings.meter);
+                        settings.error_loss_scale, robust ? &pilot_loss : nullptr, settings.meter, &feet, sampled / kPilotPoints);
       if ((robust ? pilot_loss : pilot_mean) > kPilotMargin * settings.accuracy) {
         if (tick) tick(grid);
         continue;
       }
     }
     measure_distances(surface_projector, points, patch.subcloud, stride, settings.threads, mean, max, settings.error_loss, settings.error_loss_scale, robust ? &loss_mean : nullptr,
-                      settings.meter);
+                      settings.meter, &feet, 1);
     error = robust ? loss_mean : mean;
     if (tick) tick(grid);
     if (error <= settings.accuracy || grid >= settings.max_grid) break;

@@ -67,9 +67,12 @@ std::uint8_t membership(const Vec3& p, const std::array<ChildTest, 4>& children)
   std::array<int, 4> order{{0, 1, 2, 3}};
   for (int i = 0; i < 4; ++i) lower[i] = children[i].lower_bound(p);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return lower[a] < lower[b] || (lower[a] == lower[b] && a < b); });
+  // The nearest sample of the first child, once looked up below, starts its projection.
+  SurfaceProjector::Sample first_sample{0, -1.0};
   auto distance = [&](int i) {
     if (!known[i]) {
-      d[i] = children[i].projector->project(p).distance;
+      const SurfaceProjector& projector = *children[i].projector;
+      d[i] = (i == order[0] && first_sample.distance >= 0.0 ? projector.project(p, first_sample) : projector.project(p)).distance;
       known[i] = true;
     }
     return d[i];
@@ -86,7 +89,8 @@ std::uint8_t membership(const Vec3& p, const std::array<ChildTest, 4>& children)
   // that child alone: the answer without projecting.
   const int first = order[0];
   if (lower[first] <= children[first].own_limit) {
-    const double upper = children[first].projector->sample_distance(p);
+    first_sample = children[first].projector->nearest_sample(p);
+    const double upper = first_sample.distance;
     bool alone = upper <= children[first].own_limit;
     for (int k = 1; k < 4 && alone; ++k) alone = lower[order[k]] > upper;
     if (alone) return static_cast<std::uint8_t>(1u << first);

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <string>
 
 #include "cloud_index.hpp"
@@ -19,6 +20,9 @@ constexpr int kMaxHalvings = 40;
 /// (FootPrecision::Parameters, FootPrecision::Distance).
 constexpr double kConvergedParameters = 1e-12;
 constexpr double kConvergedDistance = 1e-7;
+/// FootPrecision::Measure: a step turning back on a halved one is at most this fraction of
+/// it (see settle_on_crease).
+constexpr double kCreaseShrink = 0.25;
 /// Steps in (u,v) shorter than this are taken without a line search (see take_step).
 constexpr double kNearFoot = 1e-6;
 /// Growth of |S - q|^2 that counts as rounding for a step near the foot, in units of
@@ -57,15 +61,36 @@ struct Iterate {
 struct SurfaceProjector::Impl {
   const BaseSurface& surface;
   double tolerance;
+  bool settle_creases;  // FootPrecision::Measure
   int samples;
-  std::vector<Vec3> grid;  // samples x samples, u fastest
-  CloudIndex index;
   /// Arc length of a side between two consecutive samples on it.
   std::array<double, 4> side_step;
 
-  Impl(const BaseSurface& s, double t, int n) : surface(s), tolerance(t), samples(n), grid(s.sample(n, n).points), index(grid) {
+  Impl(const BaseSurface& s, double t, bool settle, int n) : surface(s), tolerance(t), settle_creases(settle), samples(n) {
     for (int side = 0; side < 4; ++side) side_step[side] = surface.boundary().side(static_cast<Side>(side)).length() / (samples - 1);
   }
+
+  /// The samples x samples surface samples (u fastest) and their k-d tree, made on first
+  /// use: a descent from a start given (project_from) that stays inside needs neither, and
+  /// a growing grid's error sample mostly starts from its feet on the previous surface.
+  const std::vector<Vec3>& grid() const {
+    std::call_once(built, [&] {
+      grid_ = surface.sample(samples, samples).points;
+      index_ = std::make_unique<CloudIndex>(grid_);
+    });
+    return grid_;
+  }
+  const CloudIndex& index() const {
+    grid();
+    return *index_;
+  }
+
+ private:
+  mutable std::once_flag built;
+  mutable std::vector<Vec3> grid_;
+  mutable std::unique_ptr<CloudIndex> index_;
+
+ public:
 
   static Vec2 gradient(const Vec3& q, const Iterate& it) {
     const Vec3 r = it.s.p - q;
@@ -84,23 +109,42 @@ struct SurfaceProjector::Impl {
   }
 
   /// Moves `it` by `step` (clamped to the domain), halved until the distance does not grow;
-  /// false when no such step moves it. Near the foot (`trusted`) the step is taken as it is
-  /// unless |S - q|^2 grows by more than its rounding error: the decrease a tiny step brings
-  /// is below that resolution, so a strict line search would stall there (and would stall
-  /// differently for a moved and scaled copy of the same input).
-  bool take_step(const Vec3& q, Iterate& it, Vec2 step, bool trusted) const {
+  /// returns the length of the step taken before clamping (the full step's when none was
+  /// halved), 0 when no such step moves it. Near the foot (`trusted`) the step is taken as it
+  /// is unless |S - q|^2 grows by more than its rounding error: the decrease a tiny step
+  /// brings is below that resolution, so a strict line search would stall there (and would
+  /// stall differently for a moved and scaled copy of the same input). With
+  /// `settle_creases`, halving stops below the tolerance: a step that short moves the foot
+  /// by less than the precision asked.
+  double take_step(const Vec3& q, Iterate& it, Vec2 step, bool trusted) const {
     const double rounding = kRoundingGrowth * std::numeric_limits<double>::epsilon() * std::sqrt(it.f) * (q.norm() + it.s.p.norm());
     for (int halving = 0; halving < kMaxHalvings; ++halving, step *= 0.5) {
+      if (settle_creases && halving > 0 && step.norm() <= tolerance) return 0.0;
       const Vec2 x(clamp_unit(it.x.x() + step.x()), clamp_unit(it.x.y() + step.y()));
-      if (x == it.x) return false;
-      const Iterate trial = at(q, x);
-      if (trial.f <= it.f || (trusted && trial.f <= it.f + rounding)) {
-        it = trial;
-        return true;
+      if (x == it.x) return 0.0;
+      // A halved trial is judged on the point alone (S without its derivatives, the same
+      // bits as eval_derivs' point): on a crease most of them are refused.
+      Iterate trial;
+      if (halving == 0) trial = at(q, x);
+      const double f = halving == 0 ? trial.f : (surface.eval(x.x(), x.y()) - q).squaredNorm();
+      if (f <= it.f || (trusted && f <= it.f + rounding)) {
+        it = halving == 0 ? trial : at(q, x);
+        return step.norm();
       }
-      if (trusted) return false;
+      if (trusted) return 0.0;
     }
-    return false;
+    return 0.0;
+  }
+
+  /// A foot on a crease: the Gauss-Newton step on either side points across it, a full
+  /// step increases the distance and is halved, and the iterate jumps to about the same
+  /// distance from the crease on the other side, again and again. A step turning back on a
+  /// halved one (`last`) is therefore shortened to kCreaseShrink of it: the foot lies
+  /// between the last two iterates, and the iterate closes in on the crease at a linear rate.
+  static void settle_on_crease(Vec2& step, const Vec2& last, bool halved) {
+    if (!halved || !(step.dot(last) < 0.0)) return;
+    const double cap = kCreaseShrink * last.norm(), length = step.norm();
+    if (length > cap) step *= cap / length;
   }
 
   /// Gauss-Newton on |S(u,v) - q|^2 over [0,1]^2 with an active set: a coordinate on a bound
@@ -108,6 +152,8 @@ struct SurfaceProjector::Impl {
   /// is clamped to the domain and halved until the distance decreases.
   Iterate descend(const Vec3& q, Iterate it, std::array<bool, 2>& held) const {
     double previous = std::numeric_limits<double>::infinity();
+    Vec2 last = Vec2::Zero();  // the last step taken (before clamping) ...
+    bool halved = false;       // ... and whether it was halved
     for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
       const Vec2 g = gradient(q, it);
       held = held_coordinates(it, g);
@@ -125,10 +171,16 @@ struct SurfaceProjector::Impl {
       } else if (!held[1] && hvv > 0.0) {
         step.y() = -g.y() / hvv;
       }
+      if (settle_creases) settle_on_crease(step, last, halved);
       const double length = step.norm();
-      if (!(length > 0.0) || !take_step(q, it, step, length <= kNearFoot)) break;
-      if (converged(length, previous, tolerance)) break;
-      previous = length;
+      const double taken = length > 0.0 ? take_step(q, it, step, length <= kNearFoot) : 0.0;
+      if (!(taken > 0.0)) break;
+      // With settle_creases converged by the step taken (a halved step is the progress made).
+      const double progress = settle_creases ? taken : length;
+      if (converged(progress, previous, tolerance)) break;
+      previous = progress;
+      halved = taken < length;
+      last = step * (taken / length);
     }
     held = held_coordinates(it, gradient(q, it));
     return it;
@@ -152,9 +204,11 @@ struct SurfaceProjector::Impl {
       const double h = tangent.squaredNorm();
       if (!(h > 0.0)) break;
       const double step = -tangent.dot(it.s.p - q) / h, length = std::abs(step);
-      if (!(length > 0.0) || !take_step(q, it, along_u ? Vec2(step, 0.0) : Vec2(0.0, step), length <= kNearFoot)) break;
-      if (converged(length, previous, tolerance)) break;
-      previous = length;
+      const double taken = length > 0.0 ? take_step(q, it, along_u ? Vec2(step, 0.0) : Vec2(0.0, step), length <= kNearFoot) : 0.0;
+      if (!(taken > 0.0)) break;
+      const double progress = settle_creases ? taken : length;
+      if (converged(progress, previous, tolerance)) break;
+      previous = progress;
     }
     return it;
   }
@@ -163,6 +217,7 @@ struct SurfaceProjector::Impl {
   /// samples are all farther than the best foot found plus half a sample step cannot win.
   Iterate nearest_on_boundary(const Vec3& q) const {
     const int last = samples - 1;
+    const std::vector<Vec3>& grid = this->grid();
     auto sample_point = [&](Side side, int k) -> const Vec3& {
       switch (side) {
         case Side::Bottom: return grid[k];
@@ -194,21 +249,36 @@ struct SurfaceProjector::Impl {
 
 SurfaceProjector::SurfaceProjector(const BaseSurface& surface, FootPrecision precision, int samples) {
   if (samples < 2) fail(ErrorCode::InvalidArgument, "SurfaceProjector: samples = " + std::to_string(samples) + ", at least 2 needed");
-  impl_ = std::make_unique<Impl>(surface, precision == FootPrecision::Parameters ? kConvergedParameters : kConvergedDistance, samples);
+  impl_ = std::make_unique<Impl>(surface, precision == FootPrecision::Parameters ? kConvergedParameters : kConvergedDistance, precision == FootPrecision::Measure, samples);
 }
 
 SurfaceProjector::~SurfaceProjector() = default;
 
-double SurfaceProjector::sample_distance(const Vec3& q) const {
-  if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::sample_distance: the point is not finite");
-  return (impl_->grid[impl_->index.nearest(q)] - q).norm();
+double SurfaceProjector::sample_distance(const Vec3& q) const { return nearest_sample(q).distance; }
+
+SurfaceProjector::Sample SurfaceProjector::nearest_sample(const Vec3& q) const {
+  if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::nearest_sample: the point is not finite");
+  const std::size_t k = impl_->index().nearest(q);
+  return {k, (impl_->grid()[k] - q).norm()};
 }
 
 Foot SurfaceProjector::project(const Vec3& q) const {
   if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::project: the point is not finite");
+  return project(q, Sample{impl_->index().nearest(q), 0.0});
+}
+
+Foot SurfaceProjector::project(const Vec3& q, const Sample& nearest) const {
+  if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::project: the point is not finite");
   const Impl& m = *impl_;
-  const std::size_t k = m.index.nearest(q);
-  const Vec2 start(static_cast<double>(k % m.samples) / (m.samples - 1), static_cast<double>(k / m.samples) / (m.samples - 1));
+  if (nearest.index >= m.grid().size()) fail(ErrorCode::OutOfRange, "SurfaceProjector::project: sample " + std::to_string(nearest.index) + " does not exist");
+  const std::size_t k = nearest.index;
+  return project_from(q, Vec2(static_cast<double>(k % m.samples) / (m.samples - 1), static_cast<double>(k / m.samples) / (m.samples - 1)));
+}
+
+Foot SurfaceProjector::project_from(const Vec3& q, const Vec2& start) const {
+  if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::project_from: the point is not finite");
+  if (!(start.x() >= 0.0 && start.x() <= 1.0 && start.y() >= 0.0 && start.y() <= 1.0)) fail(ErrorCode::OutOfRange, "SurfaceProjector::project_from: the start is outside [0,1]^2");
+  const Impl& m = *impl_;
   std::array<bool, 2> held{{false, false}};
   Iterate it = m.descend(q, m.at(q, start), held);
   Foot foot;
