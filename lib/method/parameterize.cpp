@@ -138,9 +138,11 @@ class Driver {
     if (options_.repair) {
       // The narrow repair first; where it leaves points the measure doubts, the wide ones from
       // the same start, each kept only when the measure doubts fewer points after it than
-      // after the best so far (fold_repair.hpp).
+      // after the best so far and the mean distance stays at most the unrepaired one (the
+      // repair is on by default because it lowers neither folds nor fit; fold_repair.hpp).
       auto repair_start = Clock::now();
       const RepairSnapshot unrepaired(result_);
+      const double unrepaired_mean = mean_counted_distance();
       const FoldMeasure first = folds;
       const bool moved = repair(judged, first, RepairReach{});
       result_.stage_seconds.parameterize += seconds_since(repair_start);
@@ -160,7 +162,7 @@ class Driver {
         FoldMeasure wide = wide_moved ? judge_folds(judged) : first;
         result_.stage_seconds.folds += seconds_since(folds_start);
         const std::size_t doubts = doubted_points(wide);
-        if (doubts < best_doubts) {
+        if (doubts < best_doubts && mean_counted_distance() <= unrepaired_mean) {
           folds = std::move(wide);
           best_doubts = doubts;
         } else {
@@ -387,6 +389,14 @@ class Driver {
     leaf.max_distance = max;
     leaf.error = robust ? loss_sum / count : leaf.mean_distance;
     leaf.accurate = leaf.error <= result_.accuracy;
+  }
+
+  /// The mean distance of the points the statistics count (summed in index order).
+  double mean_counted_distance() const {
+    const std::vector<double> counted = result_.counted_distances();
+    double sum = 0.0;
+    for (double d : counted) sum += d;
+    return counted.empty() ? 0.0 : sum / static_cast<double>(counted.size());
   }
 
   /// Points the fold measure judged folded, collapsed or scrambled: what the repair is for.
