@@ -36,8 +36,17 @@ step() {
   step_note=""
   echo
   echo "==== $name"
-  # (a process substitution, not a pipe: the step runs in this shell and can set step_note)
-  if "$@" > >(tee "$log") 2>&1; then
+  # The output goes through tee by a process substitution, not a pipe, so that the step runs
+  # in this shell and can set step_note; tee is waited for, so the log is whole before the
+  # next step prints (or why_failed reads it).
+  local out tee_pid status
+  exec {out}> >(tee "$log")
+  tee_pid=$!
+  "$@" >&"$out" 2>&1
+  status=$?
+  exec {out}>&-
+  wait "$tee_pid"
+  if [ "$status" -eq 0 ]; then
     summary+=("ok      $(printf '%4d' $((SECONDS - start))) s  $name${step_note:+: $step_note}")
   else
     summary+=("FAILED  $(printf '%4d' $((SECONDS - start))) s  $name${step_note:+: $step_note}")
@@ -53,7 +62,7 @@ why_failed() {
     name="${entry%%$'\t'*}"
     log="${entry#*$'\t'}"
     echo "---- why \"$name\" failed (the last lines of its output naming a failure; all of it above and in $log)"
-    grep -E 'FAILED|Failed|ERROR|error:|Error |SUMMARY:|deadly signal|broke its promise|out-of-memory|ALARM|timeout|leak|Assertion' "$log" | tail -15
+    grep -E 'FAILED|\*\*\*Failed|\[  ERROR   \]|\[   LINE   \]|error:|==[0-9]+==ERROR|SUMMARY: |deadly signal|broke its promise|out-of-memory|ALARM: working|Timeout|LeakSanitizer' "$log" | tail -15
   done
 }
 
@@ -135,6 +144,7 @@ build_tsan() {
 step "set-up: packages, library, dbs-param, examples (scripts/setup.sh)" bash scripts/setup.sh
 if [ "$failed" -ne 0 ]; then
   echo "test: the set-up failed; nothing else can run" >&2
+  why_failed
   exit 1
 fi
 step "Release build: tests and benchmark (build/)" build_release

@@ -144,13 +144,16 @@ bool isolated(const CloudIndex& index, const std::vector<Vec3>& points, std::siz
   return d2.size() < needed + 1 || d2.back() > r * r;
 }
 
-/// Whether at least half of the kRepairNeighbours nearest points of point i are far from the
-/// surface too: a sheet the surfaces missed, however sparsely sampled, not a lone outlier
-/// (whose nearest points are those of the surface it sticks out of).
-bool amid_far_points(const CloudIndex& index, const std::vector<Vec3>& points, std::size_t i, const std::vector<char>& far) {
+/// Whether far point i lies in a sheet the surfaces missed, however sparsely sampled, rather
+/// than standing alone: at least half of its kRepairNeighbours nearest points are far too,
+/// and all of them lie within kSheetSpacings spacings h (a sheet a few times sparser than the
+/// cloud, such as a mushroom's cap, passes; the sparse layer that a few percent of gross
+/// outliers form on each side of a surface, tens of times sparser, does not).
+bool in_missed_sheet(const CloudIndex& index, const std::vector<Vec3>& points, std::size_t i, const std::vector<char>& far, double h) {
   std::vector<std::size_t> ids;
   std::vector<double> d2;
   index.knn(points[i], kRepairNeighbours + 1, ids, d2);
+  if (d2.empty() || d2.back() > (kSheetSpacings * h) * (kSheetSpacings * h)) return false;
   std::size_t others = 0, count = 0;
   for (std::size_t m : ids) {
     if (m == i) continue;
@@ -243,13 +246,16 @@ std::vector<char> widened(const CloudIndex& index, const std::vector<Vec3>& poin
     std::vector<double> d2;
     index.knn(points[candidates[c]], kRepairNeighbours + 1, near[c], d2);
   });
+  // Far candidates are taken too: on a sampled cloud every point takes the flag of its nearest
+  // judged point, and one whose nearest judged point is far must not stay fixed amid the fill.
   std::vector<char> taken = suspect;
+  for (std::size_t i : candidates) taken[i] = taken[i] || far[i];
   for (int ring = 0; ring < rings; ++ring) {
     const std::vector<char> before = taken;
     for (std::size_t c = 0; c < candidates.size(); ++c) {
       const std::size_t i = candidates[c];
-      if (before[i] || far[i]) continue;
-      taken[i] = std::any_of(near[c].begin(), near[c].end(), [&](std::size_t m) { return before[m] || far[m]; }) ? 1 : 0;
+      if (before[i]) continue;
+      taken[i] = std::any_of(near[c].begin(), near[c].end(), [&](std::size_t m) { return before[m] != 0; }) ? 1 : 0;
     }
   }
   return taken;
@@ -299,12 +305,15 @@ std::vector<char> suspect_points(const CloudIndex& index, const std::vector<Vec3
   return taken;
 }
 
-/// Per point: 1 when farther from its surface than the repair's "far" (and in the body).
+/// Per point: 1 when farther from its surface than the repair's "far" (in the body, inside the boundary).
 std::vector<char> far_from_surface(const Result& result) {
   const std::size_t n = result.distance.size();
   std::vector<char> far(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    const bool outside = result.left_out(i);
+    // A point outside the boundary (clamped onto the domain's edge) is far from the surface
+    // because the boundary does not reach it, not because a surface missed it: a fill would
+    // only pull it inside the domain.
+    const bool outside = result.left_out(i) || (i < result.clamped.size() && result.clamped[i]);
     far[i] = !outside && result.distance[i] > kRepairFactor * result.accuracy && result.distance[i] > kRepairSpacings * result.length_scale;
   }
   return far;
@@ -343,6 +352,12 @@ std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>&
   return out;
 }
 
+bool repair_has_work(const Result& result, const std::vector<char>& suspect) {
+  if (std::find(suspect.begin(), suspect.end(), 1) != suspect.end()) return true;
+  const std::vector<char> far = far_from_surface(result);
+  return std::find(far.begin(), far.end(), 1) != far.end();
+}
+
 Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::vector<char>& suspect, int threads) {
   const std::size_t n = points.size();
   result.repaired.assign(n, 0);
@@ -367,7 +382,7 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
   for (std::size_t i = 0; i < n; ++i) outlier[i] = outside(i) ? 1 : 0;
   parallel_for(far.size(), threads, [&](std::size_t f) {
     const std::size_t i = far[f];
-    if (is_far[i]) outlier[i] = isolated(index, points, i, result.distance[i], result.length_scale) && !amid_far_points(index, points, i, is_far) ? 1 : 0;
+    if (is_far[i]) outlier[i] = isolated(index, points, i, result.distance[i], result.length_scale) && !in_missed_sheet(index, points, i, is_far, result.length_scale) ? 1 : 0;
   });
   far.erase(std::remove_if(far.begin(), far.end(), [&](std::size_t i) { return outlier[i] != 0; }), far.end());
   if (far.empty()) return {};

@@ -17,10 +17,11 @@
 // "Far" is more than kRepairFactor times the accuracy target used (which the noise floor keeps
 // above the noise, so a noisy cloud's points are not taken for unreached ones) and more than
 // kRepairSpacings cloud spacings. A far point that stands alone (a gross outlier) is neither
-// repaired nor fitted: few points around it for the cloud's spacing, and most of its nearest
-// points not far (a sparsely sampled sheet the surfaces missed, such as a mushroom's cap seen
-// at a tenth of the plate's density, is not alone: it was taken for outliers and held its
-// misplaced (u,v) amid the fill). Measured on the hard shapes of dbs-bench-folds: the mushroom goes from
+// repaired nor fitted: few points around it for the cloud's spacing, unless it lies in a sheet
+// the surfaces missed (most of its 12 nearest points far too, all within kSheetSpacings
+// spacings: the mushroom's cap, sampled about three times sparser than the plate, was taken
+// for outliers and held its misplaced (u,v) amid the fill; the layer a few percent of gross
+// outliers form is tens of times sparser). Measured on the hard shapes of dbs-bench-folds: the mushroom goes from
 // 7.2% to 0.12% folded reference triangles and its mean distance from 0.0208 to 0.0047, the
 // tall dome from 8.2% to 0.18% and 0.0183 to 0.011 (the fill alone, without the refit, raised
 // their mean distance by 17% and 43%); at 2.5 times the points, where few points are far,
@@ -39,9 +40,10 @@ namespace dbs {
 constexpr double kRepairFactor = 10.0;         ///< far: beyond this x the target ...
 constexpr double kRepairSpacings = 1.0;        ///< ... and beyond this many spacings h
 constexpr std::size_t kRepairNeighbours = 12;  ///< neighbours of the harmonic fill
-constexpr double kRepairTrust = 0.25;          ///< step towards the foot: at most this x the mean (u,v) distance to the neighbours
+constexpr double kRepairTrust = 0.15;          ///< step towards the foot: at most this x the mean (u,v) distance to the neighbours (0.25 before the wide reaches: a longer step fits better and folds more)
 constexpr double kIsolationSpacings = 3.0;      ///< a far point's neighbourhood: at least this many spacings h ...
-constexpr double kIsolationShare = 0.25;        ///< ... isolated when it holds less than this share of a sheet's points
+constexpr double kIsolationShare = 0.25;        ///< ... isolated when it holds less than this share of a sheet's points ...
+constexpr double kSheetSpacings = 8.0;          ///< ... unless it lies in a missed sheet: most of its nearest points far too, all within this many spacings h
 constexpr double kRefitRegularization = 1e-2;   ///< Tikhonov weight of the refit, times the mean diagonal of its normal matrix
 constexpr int kMaxRefitNodes = 441;             ///< leaves with more interior grid nodes (a grid above 23 x 23) are not refitted (the fit costs m^2 per point)
 constexpr double kSuspectClusterShare = 0.75;    ///< an undecided point is repaired when at least this share of its neighbours are doubtful too
@@ -77,6 +79,10 @@ struct Repair {
 /// the body are never taken. Deterministic for any thread count.
 std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter = nullptr,
                                   RepairReach reach = {});
+
+/// Whether repair_folds would take any point: one flagged in `suspect` or a far one (the
+/// driver saves the result for a second try only then).
+bool repair_has_work(const Result& result, const std::vector<char>& suspect);
 
 /// Repairs the far points of `result` (parameters of `points`, which it was made from) and
 /// those flagged in `suspect` (doubtful_points; empty: far points only) in place, setting

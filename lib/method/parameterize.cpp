@@ -136,38 +136,48 @@ class Driver {
     result_.stage_seconds.folds = seconds_since(folds_start);
     result_.repaired.assign(points_.size(), 0);
     if (options_.repair) {
-      // The narrow repair first; where it leaves points the measure doubts, the wide ones from
-      // the same start, each kept only when the measure doubts fewer points after it than
-      // after the best so far and the mean distance stays at most the unrepaired one (the
-      // repair is on by default because it lowers neither folds nor fit; fold_repair.hpp).
+      // The narrow repair first; where it moved points and leaves points the measure doubts,
+      // the wide ones from the same start, each kept only when the measure doubts fewer points
+      // after it than after the best so far and the mean distance stays at most the
+      // unrepaired one (the repair is on by default because it raises neither folds nor fit;
+      // fold_repair.hpp). Nothing is saved when there is nothing to repair.
       auto repair_start = Clock::now();
-      const RepairSnapshot unrepaired(result_);
-      const double unrepaired_mean = mean_counted_distance();
-      const FoldMeasure first = folds;
-      const bool moved = repair(judged, first, RepairReach{});
-      result_.stage_seconds.parameterize += seconds_since(repair_start);
-      if (moved) {
-        folds_start = Clock::now();
-        folds = judge_folds(judged);
-        result_.stage_seconds.folds += seconds_since(folds_start);
-      }
-      std::size_t best_doubts = doubted_points(folds);
-      for (int rings = 1; rings <= kMaxWideRings && best_doubts > 0; ++rings) {
-        const RepairSnapshot best(result_);
-        unrepaired.restore(result_);
-        repair_start = Clock::now();
-        const bool wide_moved = repair(judged, first, RepairReach{rings});
+      const std::vector<char> narrow = doubtful_points(result_, points_, judged, folds.state, threads_, &meter_);
+      if (repair_has_work(result_, narrow)) {
+        const RepairSnapshot unrepaired(result_);
+        const double unrepaired_mean = mean_counted_distance();
+        const FoldMeasure initial = folds;
+        const bool moved = repair(narrow);
         result_.stage_seconds.parameterize += seconds_since(repair_start);
-        folds_start = Clock::now();
-        FoldMeasure wide = wide_moved ? judge_folds(judged) : first;
-        result_.stage_seconds.folds += seconds_since(folds_start);
-        const std::size_t doubts = doubted_points(wide);
-        if (doubts < best_doubts && mean_counted_distance() <= unrepaired_mean) {
-          folds = std::move(wide);
-          best_doubts = doubts;
-        } else {
-          best.restore(result_);
+        if (moved) {
+          folds_start = Clock::now();
+          folds = judge_folds(judged);
+          result_.stage_seconds.folds += seconds_since(folds_start);
         }
+        std::size_t best_doubts = doubted_points(folds);
+        for (int rings = 1; moved && rings <= kMaxWideRings && best_doubts > 0; ++rings) {
+          repair_start = Clock::now();
+          const RepairSnapshot best(result_);
+          unrepaired.restore(result_);
+          const bool wide_moved = repair(doubtful_points(result_, points_, judged, initial.state, threads_, &meter_, RepairReach{rings}));
+          result_.stage_seconds.parameterize += seconds_since(repair_start);
+          if (!wide_moved) {
+            best.restore(result_);
+            continue;
+          }
+          folds_start = Clock::now();
+          FoldMeasure wide = judge_folds(judged);
+          result_.stage_seconds.folds += seconds_since(folds_start);
+          const std::size_t doubts = doubted_points(wide);
+          if (doubts < best_doubts && mean_counted_distance() <= unrepaired_mean) {
+            folds = std::move(wide);
+            best_doubts = doubts;
+          } else {
+            best.restore(result_);
+          }
+        }
+      } else {
+        result_.stage_seconds.parameterize += seconds_since(repair_start);
       }
     }
     place_far_points();
@@ -404,13 +414,11 @@ class Driver {
     return static_cast<std::size_t>(std::count_if(folds.state.begin(), folds.state.end(), [](std::int8_t s) { return s == kFolded || s == kFoldCollapsed || s == kFoldScrambled; }));
   }
 
-  /// The last-resort repair (fold_repair.hpp); the refitted leaves are judged again on the
-  /// points they parameterize, at the distances of their new surfaces.
-  /// `folds` is the fold measure of the points `judged` (all of them when empty), as
-  /// judge_folds gives it; every point takes the verdict of the nearest judged point. True
-  /// when the repair moved a point.
-  bool repair(const std::vector<std::size_t>& judged, const FoldMeasure& folds, RepairReach reach) {
-    const Repair repair = repair_folds(result_, points_, doubtful_points(result_, points_, judged, folds.state, threads_, &meter_, reach), threads_);
+  /// The last-resort repair (fold_repair.hpp) of the far points and those flagged in
+  /// `suspect` (doubtful_points); the refitted leaves are judged again on the points they
+  /// parameterize, at the distances of their new surfaces. True when the repair moved a point.
+  bool repair(const std::vector<char>& suspect) {
+    const Repair repair = repair_folds(result_, points_, suspect, threads_);
     result_.repaired_points = repair.repaired;
     if (repair.refitted.empty()) return repair.repaired > 0;
     const std::vector<std::vector<double>> distances = counted_distances_by_patch();

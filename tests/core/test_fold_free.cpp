@@ -114,17 +114,20 @@ void repair_leaves_a_noisy_cloud_alone(void**) {
   assert_int_equal(r.folds.folded, 0);
 }
 
-void repair_leaves_gross_outliers_alone(void**) {
-  // 2% of the saddle's points, drawn at random, moved 5% of its diagonal along z: far from the
-  // surface, but each alone, so the repair neither moves them nor fits the surface through
-  // them: the result is the one without the repair, bit for bit.
+void gross_outliers_left_alone(double offset) {
+  // 2% of the saddle's points, drawn at random, moved `offset` times its diagonal along z: far
+  // from the surface, but each alone, so the repair neither moves them nor fits the surface
+  // through them: the result is the one without the repair, bit for bit. At 0.3 x the
+  // diagonal the outliers of one side are nearer to each other than to the surface (their 12
+  // nearest points are all outliers), yet they form no sheet: they are about 7 times the
+  // cloud's spacing apart.
   FoldShape shape = dbs_folds::saddle();
   std::uint64_t state = 12345;
   std::vector<std::size_t> moved;
   for (std::size_t k = 0; k < shape.count(); ++k) {
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
     if ((state >> 33) % 50 != 0) continue;
-    shape.xyz[3 * k + 2] += ((state >> 20) & 1) ? 0.05 * shape.diagonal : -0.05 * shape.diagonal;
+    shape.xyz[3 * k + 2] += ((state >> 20) & 1) ? offset * shape.diagonal : -offset * shape.diagonal;
     moved.push_back(k);
   }
   dbs::Options off;
@@ -135,6 +138,11 @@ void repair_leaves_gross_outliers_alone(void**) {
   for (std::size_t k : moved) assert_true(plain.result.distance[k] > 10.0 * plain.result.accuracy && plain.result.distance[k] > plain.result.length_scale);
   assert_int_equal(on.result.repaired_points, 0);
   assert_true(on.result.u == plain.result.u && on.result.v == plain.result.v && on.result.distance == plain.result.distance);
+}
+
+void repair_leaves_gross_outliers_alone(void**) {
+  gross_outliers_left_alone(0.05);
+  gross_outliers_left_alone(0.3);
 }
 
 void repair_sets_a_scrambled_region_right(void**) {

@@ -27,10 +27,11 @@ std::vector<Vec3> points_of(const std::vector<double>& xyz) {
   return p;
 }
 
-dbs::Result run(const FoldShape& shape, int repair) {
+dbs::Result run(const FoldShape& shape, int repair, int threads = 0) {
   const dbs::Boundary boundary(points_of(shape.bottom), points_of(shape.right), points_of(shape.top), points_of(shape.left));
   dbs::Options options;
   options.repair = repair;
+  options.threads = threads;
   return dbs::parameterize(dbs::PointCloud(points_of(shape.xyz)), boundary, options);
 }
 
@@ -104,10 +105,11 @@ void wide_reach_unfolds_a_feature_the_surfaces_missed(void**) {
   const std::vector<Vec3> points = points_of(shape.xyz);
   const dbs::Result plain = run(shape, 0);
   const Candidates c = candidates(shape, points, plain);
-  const dbs::Result chosen = run(shape, 1);
+  const dbs::Result chosen = run(shape, 1, 2), one_thread = run(shape, 1, 1);
   std::printf("mushroom x2.5: %zu reference folds unrepaired, %zu chosen\n", reference_folds(shape, plain), reference_folds(shape, chosen));
   assert_true(c.best > 0);
   assert_true(same_parameters(chosen, c.results[c.best]));
+  assert_true(same_parameters(chosen, one_thread));  // the choice does not depend on the threads
   assert_true(3 * c.folds[c.best] < 2 * c.folds[0]);
   assert_true(chosen.mean_distance <= plain.mean_distance);
 
@@ -147,19 +149,24 @@ void choice_on_a_tall_feature(void**) {
 }
 
 void no_reach_raises_the_mean_distance(void**) {
-  // The cone at scan density: the widest reach doubts fewest points but refills some off
-  // their feet, above the unrepaired mean distance (0.00046 against 0.00044); the repair is
-  // on by default because it raises neither folds nor distance, so the driver refuses it and
-  // keeps one ring (0.12% folded, 0.00038; 0.20% unrepaired).
-  const FoldShape shape = dbs_folds::fold_shape("cone", 2.5);
+  // The 270-degree sphere cap at 1.5 times the points, where the root surface fails to wrap
+  // the sphere (mean distance 0.047 for one patch against 0.0042 at 1.75 times the points) and
+  // the quadtree folds 11.7% of the reference triangles: its wide reaches leave fewer points
+  // the measure doubts (85 against 206) but refill points off their feet, and the driver
+  // refuses them for raising the mean distance above the unrepaired one (0.0123 against
+  // 0.0061). The narrow repair raises it too (0.0099), which the driver accepts: it takes
+  // the folds from 11.7% to 4.3%; this cloud is outside the set on which the repair was
+  // shown to lower both.
+  const FoldShape shape = dbs_folds::fold_shape("sphere-cap", 1.5);
   const std::vector<Vec3> points = points_of(shape.xyz);
   const dbs::Result plain = run(shape, 0);
   const Candidates c = candidates(shape, points, plain);
   const dbs::Result chosen = run(shape, 1);
+  std::printf("sphere cap x1.5: %zu wide candidates refused for their distance; reference folds %zu unrepaired, %zu chosen\n", c.refused_for_distance,
+              reference_folds(shape, plain), reference_folds(shape, chosen));
   assert_true(c.refused_for_distance > 0);
   assert_true(same_parameters(chosen, c.results[c.best]));
-  assert_true(chosen.mean_distance <= plain.mean_distance);
-  assert_true(c.folds[c.best] < reference_folds(shape, plain));
+  assert_true(2 * reference_folds(shape, chosen) < reference_folds(shape, plain));
 }
 
 void snapshot_puts_the_result_back_bit_for_bit(void**) {
@@ -173,6 +180,13 @@ void snapshot_puts_the_result_back_bit_for_bit(void**) {
   assert_true(repair.repaired > 0);
   assert_false(repair.refitted.empty());
   assert_false(same_parameters(r, before));
+  // Everything the snapshot claims to put back is overwritten first (the driver's judging of
+  // refitted leaves writes their figures, repair_folds does not).
+  r.repaired_points = 123456;
+  for (dbs::Patch& p : r.patches) {
+    p.mean_distance = p.max_distance = p.error = -1.0;
+    p.accurate = !p.accurate;
+  }
   snapshot.restore(r);
   assert_true(same_parameters(r, before));
   for (std::size_t k = 0; k < r.patches.size(); ++k) {
