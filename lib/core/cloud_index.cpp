@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "error.hpp"
+#include "parallel.hpp"
 
 // near_ray() walks nanoflann's tree itself: its public members (the permutation vAcc, the root
 // node and the root's bounding box) and the nodes' node_type.lr / node_type.sub unions and
@@ -33,14 +34,23 @@ namespace dbs {
 
 namespace {
 
-/// The nanoflann dataset: the indexed points, all of them or points[subset[k]].
+/// The nanoflann dataset: the indexed points, all of them or points[subset[k]]. While the
+/// tree is built, `columns` holds the indexed points' coordinates one axis after the other
+/// (x of every point, then y, then z): the build reads one axis at a time in the order of a
+/// permutation, and a dense column of 8 bytes a point stays in cache far better than the
+/// 24-byte points, which cuts most of its time. The same numbers: the same tree.
 struct Dataset {
   const std::vector<Vec3>* points;
   const std::vector<std::size_t>* subset;  // nullptr: every point
+  const double* columns = nullptr;          // during the build only
+  std::size_t count = 0;
 
   std::size_t map(std::size_t k) const { return subset ? (*subset)[k] : k; }
   std::size_t kdtree_get_point_count() const { return subset ? subset->size() : points->size(); }
-  double kdtree_get_pt(std::uint32_t k, std::size_t dim) const { return (*points)[map(k)][static_cast<Eigen::Index>(dim)]; }
+  double kdtree_get_pt(std::uint32_t k, std::size_t dim) const {
+    if (columns) return columns[dim * count + k];
+    return (*points)[map(k)][static_cast<Eigen::Index>(dim)];
+  }
   template <class Box>
   bool kdtree_get_bbox(Box&) const {
     return false;
@@ -111,13 +121,31 @@ struct CloudIndex::Impl {
   const std::vector<Vec3>& points;
   std::vector<std::size_t> subset;
   Dataset dataset;
+  std::vector<double> columns;  // Dataset::columns, freed once the tree is built
   Tree tree;
 
   Impl(const std::vector<Vec3>& pts, std::vector<std::size_t> sub, bool whole_cloud)
       : points(pts),
         subset(std::move(sub)),
         dataset{&points, whole_cloud ? nullptr : &subset},
-        tree(3, dataset, nanoflann::KDTreeSingleIndexAdaptorParams(kLeafSize)) {}
+        columns(by_axis(dataset)),
+        tree(3, dataset, nanoflann::KDTreeSingleIndexAdaptorParams(kLeafSize)) {
+    dataset.columns = nullptr;
+    std::vector<double>().swap(columns);
+  }
+
+  /// The columns of `data` for the build (and points them at the copy).
+  static std::vector<double> by_axis(Dataset& data) {
+    const std::size_t n = data.kdtree_get_point_count();
+    std::vector<double> out(3 * n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec3& p = (*data.points)[data.map(k)];
+      for (int axis = 0; axis < 3; ++axis) out[static_cast<std::size_t>(axis) * n + k] = p[axis];
+    }
+    data.columns = out.data();
+    data.count = n;
+    return out;
+  }
 
   void collect_near_ray(const Tree::Node* node, Vec3 lo, Vec3 hi, const RayBoxBound& query, std::vector<std::size_t>& out) const {
     if (!query.may_hold(lo, hi)) return;
@@ -179,7 +207,8 @@ void CloudIndex::knn(const Vec3& q, std::size_t k, std::vector<std::size_t>& out
   out_d2.clear();
   k = std::min(k, size());
   if (k == 0) return;
-  std::vector<std::uint32_t> found(k);
+  thread_local std::vector<std::uint32_t> found;  // scratch: no allocation per query
+  found.resize(k);
   out_d2.resize(k);
   const std::size_t count = impl_->tree.knnSearch(q.data(), k, found.data(), out_d2.data());
   out_d2.resize(count);
@@ -206,28 +235,35 @@ void CloudIndex::near_ray(const Vec3& p, const Vec3& n, double bound, std::vecto
   impl_->collect_near_ray(tree.DBS_NANOFLANN_MEMBER(root_node), Vec3(box[0].low, box[1].low, box[2].low), Vec3(box[0].high, box[1].high, box[2].high), query, out_idx);
 }
 
-double cloud_spacing(const CloudIndex& index, std::size_t max_samples) {
+double cloud_spacing(const CloudIndex& index, std::size_t max_samples, int threads) {
   const std::size_t n = index.size();
   const std::size_t samples = std::min(n, std::max<std::size_t>(max_samples, 1));
   const std::vector<Vec3>& points = index.points();
-  std::vector<std::size_t> idx;
-  std::vector<double> d2;
-  double sum = 0.0;
-  std::size_t counted = 0;
-  for (std::size_t s = 0; s < samples; ++s) {
+  // Each sample's distance alone (0: no distinct neighbour), summed in order afterwards:
+  // the same sum for any thread count.
+  std::vector<double> nearest(samples, 0.0);
+  parallel_for(samples, threads, [&](std::size_t s) {
+    thread_local std::vector<std::size_t> idx;
+    thread_local std::vector<double> d2;
     const Vec3& q = points[index.point_index(s * n / samples)];
     // Widen the query until it reaches a point distinct from q (duplicates sit at d2 == 0).
     for (std::size_t k = 2;; k = std::min(2 * k, n)) {
       index.knn(q, k, idx, d2);
       const auto distinct = std::find_if(d2.begin(), d2.end(), [](double v) { return v > 0.0; });
       if (distinct != d2.end()) {
-        sum += std::sqrt(*distinct);
-        ++counted;
+        nearest[s] = std::sqrt(*distinct);
         break;
       }
       if (k >= n) break;
     }
-  }
+  });
+  double sum = 0.0;
+  std::size_t counted = 0;
+  for (double d : nearest)
+    if (d > 0.0) {
+      sum += d;
+      ++counted;
+    }
   if (counted == 0) fail(ErrorCode::Degenerate, "the cloud has fewer than two distinct points (" + std::to_string(n) + " points indexed)");
   return sum / static_cast<double>(counted);
 }

@@ -47,6 +47,7 @@ class CloudIndex {
 /// Length scale h of a cloud: the mean distance of a point to its nearest neighbour,
 /// estimated deterministically on at most `max_samples` evenly strided points. Duplicate
 /// points are skipped (the next distinct neighbour counts). Scales exactly with the input.
-double cloud_spacing(const CloudIndex& index, std::size_t max_samples = 20000);
+/// threads as Options::threads; the same result for any thread count.
+double cloud_spacing(const CloudIndex& index, std::size_t max_samples = 20000, int threads = 1);
 
 }  // namespace dbs

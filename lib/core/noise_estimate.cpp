@@ -200,9 +200,9 @@ Pass estimate_pass(const CloudIndex& cloud, const CloudIndex& level, std::size_t
 NoiseEstimate estimate_noise(const CloudIndex& index, int threads, WorkMeter* meter) {
   NoiseEstimate out;
   const std::size_t n = index.size();
-  if (n >= 2) out.spacing = cloud_spacing(index);
-  if (n < kNoiseNeighbours + 1) return out;
   threads = resolve_threads(threads);
+  if (n >= 2) out.spacing = cloud_spacing(index, 20000, threads);
+  if (n < kNoiseNeighbours + 1) return out;
   // Where the noise is thick against the neighbourhood, its points form a blob rather than a
   // sheet: the PCA frame turns random and the centre sits in the middle of its neighbours
   // whatever its noise, so the residuals shrink. Steps of twice the neighbourhood's area

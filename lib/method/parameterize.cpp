@@ -370,7 +370,8 @@ class Driver {
   /// leaf's mean and max distance (over all its points, replacing the sample's figures of
   /// the evolution) and whether it met the target.
   void project_leaf(Patch& leaf) {
-    const SurfaceProjector projector(leaf.surface);
+    SurfaceProjector projector(leaf.surface);
+    projector.prepare(leaf.subcloud.size());
     // A point appears once in the subcloud: each body touches only its own point's state.
     std::vector<double> distance(leaf.subcloud.size());
     meter_.run(leaf.subcloud.size(), threads_, [&](std::size_t k) {
@@ -462,7 +463,8 @@ class Driver {
   /// Projects points[ids] onto leaf `id` and keeps each foot that is better.
   void project_onto(int id, const std::vector<std::size_t>& ids) {
     const Patch& leaf = result_.patches[id];
-    const SurfaceProjector projector(leaf.surface);
+    SurfaceProjector projector(leaf.surface);
+    projector.prepare(ids.size());
     // ids are distinct: each body touches only its own point's state.
     meter_.run(ids.size(), threads_, [&](std::size_t k) {
       consider(ids[k], leaf, projector.project(points_[ids[k]]));

@@ -85,6 +85,14 @@ struct SurfaceProjector::Impl {
     return *index_;
   }
 
+  /// eval_derivs at every sample (u fastest), made by prepare(); empty until then.
+  std::vector<SurfacePoint> tabulated;
+
+  /// The parameters of sample k.
+  Vec2 sample_parameters(std::size_t k) const {
+    return Vec2(static_cast<double>(k % samples) / (samples - 1), static_cast<double>(k / samples) / (samples - 1));
+  }
+
  private:
   mutable std::once_flag built;
   mutable std::vector<Vec3> grid_;
@@ -245,6 +253,20 @@ struct SurfaceProjector::Impl {
     }
     return best;
   }
+
+  /// The descent from `start`, then the nearest boundary point where it leaves the patch.
+  Foot foot_from(const Vec3& q, const Iterate& start) const {
+    std::array<bool, 2> held{{false, false}};
+    Iterate it = descend(q, start, held);
+    Foot foot;
+    foot.inside = !held[0] && !held[1];
+    if (!foot.inside) it = nearest_on_boundary(q);
+    foot.u = it.x.x();
+    foot.v = it.x.y();
+    foot.point = it.s.p;
+    foot.distance = std::sqrt(it.f);
+    return foot;
+  }
 };
 
 SurfaceProjector::SurfaceProjector(const BaseSurface& surface, FootPrecision precision, int samples) {
@@ -272,23 +294,28 @@ Foot SurfaceProjector::project(const Vec3& q, const Sample& nearest) const {
   const Impl& m = *impl_;
   if (nearest.index >= m.grid().size()) fail(ErrorCode::OutOfRange, "SurfaceProjector::project: sample " + std::to_string(nearest.index) + " does not exist");
   const std::size_t k = nearest.index;
-  return project_from(q, Vec2(static_cast<double>(k % m.samples) / (m.samples - 1), static_cast<double>(k / m.samples) / (m.samples - 1)));
+  if (m.tabulated.empty()) return project_from(q, m.sample_parameters(k));
+  // The start's evaluation from the table: the same bits as m.at(q, start).
+  Iterate start{m.sample_parameters(k), m.tabulated[k], 0.0};
+  start.f = (start.s.p - q).squaredNorm();
+  return m.foot_from(q, start);
+}
+
+void SurfaceProjector::prepare(std::size_t projections) {
+  Impl& m = *impl_;
+  const std::size_t count = static_cast<std::size_t>(m.samples) * static_cast<std::size_t>(m.samples);
+  if (projections <= count || !m.tabulated.empty()) return;
+  m.tabulated.resize(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    const Vec2 x = m.sample_parameters(k);
+    m.tabulated[k] = m.surface.eval_derivs(x.x(), x.y());
+  }
 }
 
 Foot SurfaceProjector::project_from(const Vec3& q, const Vec2& start) const {
   if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::project_from: the point is not finite");
   if (!(start.x() >= 0.0 && start.x() <= 1.0 && start.y() >= 0.0 && start.y() <= 1.0)) fail(ErrorCode::OutOfRange, "SurfaceProjector::project_from: the start is outside [0,1]^2");
-  const Impl& m = *impl_;
-  std::array<bool, 2> held{{false, false}};
-  Iterate it = m.descend(q, m.at(q, start), held);
-  Foot foot;
-  foot.inside = !held[0] && !held[1];
-  if (!foot.inside) it = m.nearest_on_boundary(q);
-  foot.u = it.x.x();
-  foot.v = it.x.y();
-  foot.point = it.s.p;
-  foot.distance = std::sqrt(it.f);
-  return foot;
+  return impl_->foot_from(q, impl_->at(q, start));
 }
 
 }  // namespace dbs
