@@ -1,6 +1,6 @@
 // What the last-resort repair may change in a result, saved so that one repair can be tried
-// and undone: every point's (u,v), distance, patch, level and flag, and every patch's surface,
-// grid and judged figures (a refit changes a leaf's grid). The subclouds, which the repair
+// and undone: every point's (u,v), distance, patch, level and flag, and every leaf's surface,
+// grid and judged figures (a refit changes a leaf's grid; no other patch is touched). The subclouds, which the repair
 // never touches and which hold most of a result's memory, are not copied.
 #pragma once
 #include <cstddef>
@@ -18,7 +18,8 @@ class RepairSnapshot {
   void restore(Result& result) const;
 
  private:
-  struct PatchState {
+  struct LeafState {
+    std::size_t id;
     BaseSurface surface;
     Grid grid;
     double mean_distance, max_distance, error;
@@ -28,7 +29,8 @@ class RepairSnapshot {
   std::vector<std::int32_t> patch_, level_;
   std::vector<char> repaired_;
   std::size_t repaired_points_;
-  std::vector<PatchState> patches_;
+  std::vector<LeafState> leaves_;
+  std::size_t patch_count_ = 0;
 };
 
 }  // namespace dbs
