@@ -22,6 +22,25 @@ constexpr std::size_t kPilotPoints = 512;
 /// one growth more, never a target reported met that is not.
 constexpr double kPilotMargin = 3.0;
 
+/// The smallest grid that moves a node (3 x 3: one interior node).
+constexpr int kMinWarmUpGrid = 3;
+
+/// Grid projections of `patch` at one grid size: where the pleat guard held nodes back, the
+/// surface moves on from where it got to, along its new normals, up to kMaxDampedSteps
+/// times: an overhang or a steep wall is reached in a few damped steps instead of being
+/// pleated over (pleat_guard.hpp).
+void project_damped(Patch& patch, int grid, const DirectedProjector& projector, const EvolveSettings& settings, RefinementCounts& counts) {
+  for (int step = 0; step < kMaxDampedSteps; ++step) {
+    std::size_t damped = 0;
+    Grid projected = project_grid(patch.surface, grid, grid, projector, settings.gamma, &damped, settings.refinement, &counts, settings.threads, settings.meter);
+    patch.surface = BaseSurface(patch.surface.boundary(), projected);
+    patch.grid = std::move(projected);
+    ++patch.iterations;
+    patch.damped_nodes += damped;
+    if (damped == 0) break;
+  }
+}
+
 }  // namespace
 
 void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean, double& out_max,
@@ -89,19 +108,10 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
   // Each sample point's foot on the last surface it was measured on: the surface moves
   // little from one grid to the next, so the descent starts there (NaN: not measured yet).
   std::vector<Vec2> feet;
+  // The coarser grids first, unmeasured (EvolveSettings::warm_up_grid).
+  for (int grid = std::max(settings.warm_up_grid, kMinWarmUpGrid); settings.warm_up_grid > 0 && grid < settings.initial_grid; ++grid) project_damped(patch, grid, projector, settings, counts);
   for (int grid = settings.initial_grid;; ++grid) {
-    // Where the pleat guard held nodes back, the surface moves on from where it got to, along
-    // its new normals, before the grid grows: an overhang or a steep wall is reached in a
-    // few damped steps instead of being pleated over (pleat_guard.hpp).
-    for (int step = 0; step < kMaxDampedSteps; ++step) {
-      std::size_t damped = 0;
-      Grid projected = project_grid(patch.surface, grid, grid, projector, settings.gamma, &damped, settings.refinement, &counts, settings.threads, settings.meter);
-      patch.surface = BaseSurface(patch.surface.boundary(), projected);
-      patch.grid = std::move(projected);
-      ++patch.iterations;
-      patch.damped_nodes += damped;
-      if (damped == 0) break;
-    }
+    project_damped(patch, grid, projector, settings, counts);
     const SurfaceProjector surface_projector(patch.surface, FootPrecision::Measure);
     // A grid that can still grow is first judged on a pilot of about kPilotPoints of the
     // sample: far above the target, it grows without the whole sample being measured.

@@ -213,6 +213,7 @@ class Driver {
     EvolveSettings settings;
     settings.accuracy = result_.accuracy;
     settings.initial_grid = options_.initial_grid;
+    settings.warm_up_grid = options_.initial_grid - 1;
     settings.max_grid = options_.max_grid;
     settings.gamma = options_.smoothing;
     settings.refinement = refinement_;

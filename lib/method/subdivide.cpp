@@ -7,6 +7,7 @@
 
 #include "curve_projection.hpp"
 #include "curve_refinement.hpp"
+#include "departure_guard.hpp"
 #include "error.hpp"
 
 namespace dbs {
@@ -67,7 +68,7 @@ SplitCurve project_middle_curve(const BaseSurface& surface, ParamAt at, const Ve
   input.fixed.push_back(centre_node);
 
   for (int pass = 0; pass < kMaxProjectionPasses; ++pass) {
-    const std::vector<double> offsets = project_curve(projector, input, gamma);
+    const std::vector<double> offsets = solve_curve_near(projector, input, gamma, RefinementSettings());
     double largest = 0.0;
     for (std::size_t k = 0; k < offsets.size(); ++k) {
       input.nodes[k] += offsets[k] * input.directions[k];

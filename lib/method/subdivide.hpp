@@ -1,7 +1,8 @@
 // Algorithm A1 (steps A1.1-A1.4): split a patch into four children. The middle curves
 // u = 1/2 and v = 1/2 of the parent surface are sampled and projected onto the parent's
 // subcloud with the smooth curve projection (A3), repeated from the projected nodes until it
-// settles (the seams are final boundaries of the children); the patch centre is projected
+// settles (the seams are final boundaries of the children), a node the projection would send
+// off the cloud held where it is (departure_guard.hpp); the patch centre is projected
 // once for both curves and is a fixed interior node of each, so the curves meet there. The
 // outer sides are split at their arc-length midpoints, the middle curves at the centre.
 // Children share the middle curves' halves as boundaries (seams C0 by construction); their

@@ -208,7 +208,7 @@ void bump_nodes_lie_closer_to_the_surface(void**) {
   assert_true(cer.mean_distance < lin.mean_distance);
   assert_int_equal(cer.solver, 1);
   assert_int_equal(lin.solver, 0);
-  assert_int_equal(cer.refined_curves, 18);  // 9 rows and 9 columns, one projection
+  assert_int_equal(cer.refined_curves, 16 + 18);  // 8 + 8 sections at the 10 x 10 warm-up, 9 + 9 at 11 x 11
   assert_true(cer.ceres_iterations >= cer.refined_curves);
   assert_true(lin.ceres_iterations == 0 && lin.refined_curves == 0);
 }
