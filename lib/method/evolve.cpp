@@ -25,6 +25,13 @@ constexpr double kPilotMargin = 3.0;
 /// The smallest grid that moves a node (3 x 3: one interior node).
 constexpr int kMinWarmUpGrid = 3;
 
+/// evolve_patch_with_restart: a patch ending more than this times above the target is evolved
+/// again from the coarsest warm-up ...
+constexpr double kCoarseRestartFactor = 10.0;
+/// ... which is kept where its error is below this times the first one's (the 300-degree cap:
+/// 0.03-0.18; where both wrap the cloud: 0.70-0.99).
+constexpr double kCoarseRestartGain = 0.5;
+
 /// Grid projections of `patch` at one grid size: where the pleat guard held nodes back, the
 /// surface moves on from where it got to, along its new normals, up to kMaxDampedSteps
 /// times: an overhang or a steep wall is reached in a few damped steps instead of being
@@ -140,6 +147,24 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
   patch.ceres_iterations = counts.iterations;
   patch.error = error;
   patch.accurate = error <= settings.accuracy;
+}
+
+void evolve_patch_with_restart(Patch& patch, const std::vector<Vec3>& points, const DirectedProjector& projector, const EvolveSettings& settings) {
+  Patch start = patch;
+  evolve_patch(patch, points, projector, settings);
+  if (patch.accurate || !(patch.error > kCoarseRestartFactor * settings.accuracy) || settings.warm_up_grid <= 0 || settings.initial_grid <= kMinWarmUpGrid + 1) return;
+  EvolveSettings coarse = settings;
+  coarse.warm_up_grid = kMinWarmUpGrid;
+  evolve_patch(start, points, projector, coarse);
+  // The work of both counts (iterations, damped nodes, Ceres); the kept one's surface and
+  // figures stand.
+  Patch& kept = start.error < kCoarseRestartGain * patch.error ? start : patch;
+  const Patch& dropped = &kept == &start ? patch : start;
+  kept.iterations += dropped.iterations;
+  kept.damped_nodes += dropped.damped_nodes;
+  kept.refined_curves += dropped.refined_curves;
+  kept.ceres_iterations += dropped.ceres_iterations;
+  if (&kept == &start) patch = std::move(start);
 }
 
 }  // namespace dbs

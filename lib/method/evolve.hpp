@@ -56,6 +56,18 @@ using EvolveTick = std::function<void(int grid)>;
 /// the target). A patch with no points keeps its surface (nothing to fit) and counts as accurate.
 void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedProjector& projector, const EvolveSettings& settings, const EvolveTick& tick = {});
 
+/// evolve_patch, and where the patch ends far above the target (more than
+/// kCoarseRestartFactor times it), once more from the Coons-like start it was given but warmed
+/// up from the coarsest grid (3 x 3); the second is kept where its error is below
+/// kCoarseRestartGain times the first's (its iterations add to the first's). For the root: on
+/// a cloud closing over a small rim (a 300-degree sphere cap) the grids warmed up from one size
+/// below the first cross over the rim and never wrap it (mean distance 0.17-0.28), while a
+/// single interior node first lifts the surface towards the far pole and the finer grids
+/// inflate it from there (0.009-0.031); where both starts wrap the cloud their errors differ
+/// by a few percent and the finer start is kept (on the mushroom and the cone the coarse one,
+/// 2-15% nearer, folds more after subdivision).
+void evolve_patch_with_restart(Patch& patch, const std::vector<Vec3>& points, const DirectedProjector& projector, const EvolveSettings& settings);
+
 /// Mean and maximum distance of points[indices[k]] (k strided by `stride`) to `surface`;
 /// deterministic for any thread count. `out_loss_mean`, when given, receives the mean of
 /// robust_distance(loss, loss_scale, d) over the same points; `meter` (may be null) counts a

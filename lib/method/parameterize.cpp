@@ -231,7 +231,9 @@ class Driver {
       const bool root = patch.parent < 0;
       if (!root) indices[k] = std::make_unique<CloudIndex>(points_, patch.subcloud);
       projectors[k] = std::make_unique<DirectedProjector>(root ? *cloud_index_ : *indices[k], result_.length_scale);
-      evolve_patch(patch, points_, *projectors[k], settings);
+      // Only the root starts far from the cloud, from the Coons patch of its boundary.
+      if (root) evolve_patch_with_restart(patch, points_, *projectors[k], settings);
+      else evolve_patch(patch, points_, *projectors[k], settings);
     });
     for (int id : ids) {
       const Patch& p = result_.patches[id];

@@ -256,29 +256,35 @@ void hard_shapes_stay_within_their_bounds(void**) {
 }
 
 void sphere_cap_against_the_meshless_reference(void**) {
-  // 270 degrees of a sphere, open only at its rim: no failure; the issue asks for no more
-  // folds than a meshless method (k = 12 inverse-distance weights, one solve) on the same
-  // points. At 1, 1.25, 1.5 and 2 times the points: at the three denser ones the root surface
-  // did not wrap the sphere and a seam node shot 46 h off the cloud, folding 3-17% (before
-  // the warm-up grid and the seams' departure guard). Now 4, 11, 9 and 6 folded triangles
-  // against the meshless 5, 10, 12 and 7: at 1.25 times the points one more than the
-  // meshless method (slivers on the diagonals near the corners, where the small rim's
-  // corners pinch the map; one patch folds the same 11). Asserted: at most 0.12% at every
-  // density, and no more than the meshless method over the four together.
-  std::size_t ours = 0, theirs = 0;
-  for (double density : {1.0, 1.25, 1.5, 2.0}) {
-    const FoldShape shape = dbs_folds::fold_shape("sphere-cap", density);
-    const Run r = run(shape);
-    const dbs_folds::MeshlessReference meshless = dbs_folds::meshless_reference(shape);
-    const dbs_folds::FoldCount reference = dbs_folds::fold_share(meshless.uv, shape.triangles);
-    std::printf("sphere cap x%.2f (%zu points): libdbs %zu folds (%.2f%%, %d levels), meshless %zu (%.2f%%)\n", density, shape.xyz.size() / 3, r.folds.folded,
-                100.0 * r.folds.share, r.result.levels, reference.folded, 100.0 * reference.share);
-    assert_true(reference.share <= 0.002);
-    assert_true(r.folds.share <= 0.0012);
-    ours += r.folds.folded;
-    theirs += reference.folded;
+  // 270 and 300 degrees of a sphere, open only at a small rim: no failure; the issue asks for
+  // no more folds than a meshless method (k = 12 inverse-distance weights, one solve) on the
+  // same points. At 1, 1.25, 1.5 and 2 times the points. 270 degrees: at the three denser
+  // ones the root surface did not wrap the sphere and a seam node shot 46 h off the cloud,
+  // folding 3-17% (before the warm-up grid and the seams' departure guard); now 4, 11, 9 and 6
+  // folded triangles against the meshless 5, 10, 12 and 7. 300 degrees: 0.7-5.8% with the
+  // warm-up grid alone (the root's grids crossed over the rim: mean distance 0.17-0.28), now
+  // 6, 14, 9 and 9 against 8, 12, 11 and 13, since the root restarts from a 3 x 3 grid. One
+  // or two more than the meshless method at 1.25 times the points: slivers on the diagonals
+  // near the corners, where the small rim's corners pinch the map (one patch folds the same).
+  // Asserted: at most 0.2% at every density, and no more than the meshless method over the
+  // four together.
+  for (const char* name : {"sphere-cap", "sphere-cap-300"}) {
+    std::size_t ours = 0, theirs = 0;
+    for (double density : {1.0, 1.25, 1.5, 2.0}) {
+      const FoldShape shape = dbs_folds::fold_shape(name, density);
+      const Run r = run(shape);
+      const dbs_folds::MeshlessReference meshless = dbs_folds::meshless_reference(shape);
+      const dbs_folds::FoldCount reference = dbs_folds::fold_share(meshless.uv, shape.triangles);
+      std::printf("%s x%.2f (%zu points): libdbs %zu folds (%.2f%%, %d levels, mean distance %.3g), meshless %zu (%.2f%%)\n", name, density, shape.count(), r.folds.folded,
+                  100.0 * r.folds.share, r.result.levels, r.result.mean_distance, reference.folded, 100.0 * reference.share);
+      assert_true(reference.share <= 0.002);
+      assert_true(r.folds.share <= 0.002);
+      assert_true(r.result.mean_distance <= 0.004);  // wrapped: the target is 0.0033-0.0034
+      ours += r.folds.folded;
+      theirs += reference.folded;
+    }
+    assert_true(ours <= theirs);
   }
-  assert_true(ours <= theirs);
 }
 
 void repair_on_the_hard_shapes(void**) {

@@ -42,9 +42,12 @@ void shapes_have_their_size_and_boundary(void**) {
     assert_int_equal(s.grid_a * s.grid_b, n);
     for (double x : s.xyz) assert_true(std::isfinite(x));
     for (double t : s.uv_true) assert_true(t > 0.0 && t < 1.0);
-    // Most grid triangles survive the 10-degree filter, all of them well formed.
+    // Most grid triangles survive the 10-degree filter, all of them well formed; the more
+    // closed sphere caps squeeze the corners of the square onto their small rim, and the
+    // filter drops 5% (300 degrees) and 16% (330 degrees) of their triangles there.
     const std::size_t cells = 2 * (s.grid_a - 1) * (s.grid_b - 1);
-    assert_true(s.triangle_count() >= 0.95 * cells && s.triangle_count() <= cells);
+    const double survive = s.name.rfind("sphere-cap-", 0) == 0 ? 0.8 : 0.95;
+    assert_true(s.triangle_count() >= survive * cells && s.triangle_count() <= cells);
     for (int index : s.triangles) assert_true(index >= 0 && static_cast<std::size_t>(index) < n);
     const std::vector<double>* sides[4] = {&s.bottom, &s.right, &s.top, &s.left};
     for (const std::vector<double>* side : sides) assert_int_equal(side->size(), 3 * kBoundaryPoints);

@@ -335,8 +335,9 @@ FoldShape cone(double relative_noise) {
                64, 64, relative_noise, 0xc0e);
 }
 
-FoldShape sphere_cap(double relative_noise) {
-  const double polar_max = 135.0 * kPi / 180.0;
+FoldShape sphere_cap(double relative_noise, double degrees) {
+  if (!(degrees > 0.0 && degrees < 360.0)) throw std::invalid_argument("sphere_cap: " + std::to_string(degrees) + " degrees is outside (0, 360)");
+  const double polar_max = 0.5 * degrees * kPi / 180.0;
   auto s = [=](double a, double b) {
     // Concentric (Shirley-Chiu) map of [-1,1]^2 onto the unit disk: the sides go to quarter arcs.
     const double x = 2 * a - 1, y = 2 * b - 1;
@@ -353,12 +354,14 @@ FoldShape sphere_cap(double relative_noise) {
     const double radius = std::hypot(dx, dy), theta = polar_max * radius;
     return Point3{std::sin(theta) * dx / radius, std::sin(theta) * dy / radius, std::cos(theta)};
   };
-  return build("sphere-cap" + noise_suffix(relative_noise), "270 degrees of the unit sphere, open at polar angle 135 degrees", s, 64, 64, relative_noise,
-               0x5f3e);
+  const int angle = static_cast<int>(std::lround(degrees));
+  const std::string name = angle == 270 ? "sphere-cap" : "sphere-cap-" + std::to_string(angle);
+  return build(name + noise_suffix(relative_noise), std::to_string(angle) + " degrees of the unit sphere, open at polar angle " + std::to_string(angle / 2) + " degrees", s, 64, 64,
+               relative_noise, 0x5f3e);
 }
 
 std::vector<std::string> fold_shape_names() {
-  return {"saddle", "saddle-noisy", "rippled", "rippled-noisy", "mushroom", "tall-dome", "fingers", "open-box", "cone", "sphere-cap"};
+  return {"saddle", "saddle-noisy", "rippled", "rippled-noisy", "mushroom", "tall-dome", "fingers", "open-box", "cone", "sphere-cap", "sphere-cap-300", "sphere-cap-330"};
 }
 
 FoldShape fold_shape(const std::string& name, double density) {
@@ -381,6 +384,8 @@ FoldShape fold_shape(const std::string& name) {
   if (name == "open-box") return open_box();
   if (name == "cone") return cone();
   if (name == "sphere-cap") return sphere_cap();
+  if (name == "sphere-cap-300") return sphere_cap(0.0, 300.0);
+  if (name == "sphere-cap-330") return sphere_cap(0.0, 330.0);
   throw std::invalid_argument("fold_shape: unknown shape '" + name + "'");
 }
 

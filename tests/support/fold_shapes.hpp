@@ -72,7 +72,9 @@ FoldShape open_box(double relative_noise = 0.0);
 FoldShape cone(double relative_noise = 0.0);
 /// (h) 270 degrees of the unit sphere (polar angle <= 135 degrees), the rim split into four
 ///     90-degree arcs; (a,b) -> disk by the concentric (Shirley-Chiu) map, radius -> polar angle.
-FoldShape sphere_cap(double relative_noise = 0.0);
+///     `degrees` (in (0, 360)) makes it more or less closed: 300 ("sphere-cap-300") and 330
+///     ("sphere-cap-330", a head open only at its neck) close over ever smaller rims.
+FoldShape sphere_cap(double relative_noise = 0.0, double degrees = 270.0);
 
 /// The sigma for the noisy saddle: 0.5% of the diagonal.
 constexpr double kSaddleNoise = 0.005;
