@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "grid_projection.hpp"
+#include "meshless_seed.hpp"
 #include "parallel.hpp"
 #include "robust_loss.hpp"
 #include "surface_projection.hpp"
@@ -150,21 +151,35 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
 }
 
 void evolve_patch_with_restart(Patch& patch, const std::vector<Vec3>& points, const DirectedProjector& projector, const EvolveSettings& settings) {
-  Patch start = patch;
+  const Patch start = patch;
   evolve_patch(patch, points, projector, settings);
-  if (patch.accurate || !(patch.error > kCoarseRestartFactor * settings.accuracy) || settings.warm_up_grid <= 0 || settings.initial_grid <= kMinWarmUpGrid + 1) return;
-  EvolveSettings coarse = settings;
-  coarse.warm_up_grid = kMinWarmUpGrid;
-  evolve_patch(start, points, projector, coarse);
+  auto far_above = [&] { return !patch.accurate && patch.error > kCoarseRestartFactor * settings.accuracy; };
   // The work of both counts (iterations, damped nodes, Ceres); the kept one's surface and
   // figures stand.
-  Patch& kept = start.error < kCoarseRestartGain * patch.error ? start : patch;
-  const Patch& dropped = &kept == &start ? patch : start;
-  kept.iterations += dropped.iterations;
-  kept.damped_nodes += dropped.damped_nodes;
-  kept.refined_curves += dropped.refined_curves;
-  kept.ceres_iterations += dropped.ceres_iterations;
-  if (&kept == &start) patch = std::move(start);
+  auto keep_better = [&](Patch& other) {
+    Patch& kept = other.error < kCoarseRestartGain * patch.error ? other : patch;
+    const Patch& dropped = &kept == &other ? patch : other;
+    kept.iterations += dropped.iterations;
+    kept.damped_nodes += dropped.damped_nodes;
+    kept.refined_curves += dropped.refined_curves;
+    kept.ceres_iterations += dropped.ceres_iterations;
+    if (&kept == &other) patch = std::move(other);
+  };
+  if (!far_above()) return;
+  if (settings.warm_up_grid > 0 && settings.initial_grid > kMinWarmUpGrid + 1) {
+    Patch coarse = start;
+    EvolveSettings from_coarse = settings;
+    from_coarse.warm_up_grid = kMinWarmUpGrid;
+    evolve_patch(coarse, points, projector, from_coarse);
+    keep_better(coarse);
+  }
+  if (!far_above()) return;
+  Patch seeded = start;
+  if (!seed_from_meshless_map(seeded, points, settings.initial_grid)) return;
+  EvolveSettings from_seed = settings;
+  from_seed.warm_up_grid = 0;  // the seed lies on the cloud already
+  evolve_patch(seeded, points, projector, from_seed);
+  keep_better(seeded);
 }
 
 }  // namespace dbs

@@ -3,14 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Dense>
-
 #include "cloud_index.hpp"
 #include "error.hpp"
 #include "fold_measure.hpp"
 #include "harmonic_fill.hpp"
 #include "parallel.hpp"
-#include "spline_displacement.hpp"
 
 namespace dbs {
 
@@ -50,76 +47,6 @@ Vec2 step_towards_foot(const Result& result, const Vec3& q, const Vec2& start, d
     x = next;
   }
   return x;
-}
-
-/// Refits `leaf`'s grid so that its surface at each data point's (u,v) comes close to the
-/// point: least squares over `ids` (points whose (u,v) lie on the leaf), the interior nodes
-/// drawn towards where they are by a Tikhonov term of kRefitRegularization times the mean
-/// diagonal of the normal matrix, so that nodes with little data stay. The surface is its
-/// boundary's Coons patch plus a spline displacement linear in the grid's interior values,
-/// so the fit is one small dense solve; the boundary, hence every seam, is unchanged. False
-/// (the leaf untouched) when the grid is too large, no data reaches it or the solve fails.
-bool refit_leaf(Patch& leaf, const std::vector<std::size_t>& ids, const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v) {
-  const Grid& grid = leaf.grid;
-  const int nu = grid.nu, nv = grid.nv;
-  if (nu < 3 || nv < 3 || ids.empty()) return false;
-  const int mi = nu - 2, mj = nv - 2, m = mi * mj;
-  if (m > kMaxRefitNodes) return false;  // a dense m x m system beyond this costs more than it is worth
-  const BaseSurface coons(leaf.surface.boundary());
-  // The spline is a tensor product of linear 1D interpolations, so the displacement of a
-  // unit value at node (i,j) is phi_i(s) psi_j(t), both cardinal (1 at their own site, 0 at
-  // the others): phi_i is read along the grid line t = v(1) of a unit at (i,1), psi_j along
-  // s = u(1) of a unit at (1,j).
-  std::vector<SplineDisplacement> phi, psi;
-  for (int i = 1; i + 1 < nu; ++i) {
-    Grid unit(nu, nv);
-    unit(i, 1) = Vec3(1.0, 0.0, 0.0);
-    phi.emplace_back(unit);
-  }
-  for (int j = 1; j + 1 < nv; ++j) {
-    Grid unit(nu, nv);
-    unit(1, j) = Vec3(1.0, 0.0, 0.0);
-    psi.emplace_back(unit);
-  }
-  // The normal equations, accumulated over blocks of kRefitBlock points (no n x m matrix: a
-  // leaf may hold most of a large cloud; a block is one rank-k update).
-  constexpr int kRefitBlock = 128;
-  Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(m, m), rhs = Eigen::MatrixXd::Zero(m, 3), g0(m, 3);
-  Eigen::MatrixXd rows(m, kRefitBlock), residual(kRefitBlock, 3);
-  Eigen::VectorXd ph(mi), ps(mj);
-  int filled = 0;
-  auto flush = [&] {
-    normal.selfadjointView<Eigen::Lower>().rankUpdate(rows.leftCols(filled));
-    rhs.noalias() += rows.leftCols(filled) * residual.topRows(filled);
-    filled = 0;
-  };
-  for (std::size_t k = 0; k < ids.size(); ++k) {
-    const Vec2 st = leaf.rect.to_local(u[ids[k]], v[ids[k]]).cwiseMax(0.0).cwiseMin(1.0);
-    for (int i = 0; i < mi; ++i) ph[i] = phi[static_cast<std::size_t>(i)].eval(st.x(), grid.v(1)).x();
-    for (int j = 0; j < mj; ++j) ps[j] = psi[static_cast<std::size_t>(j)].eval(grid.u(1), st.y()).x();
-    for (int c = 0; c < m; ++c) rows(c, filled) = ph[c % mi] * ps[c / mi];
-    residual.row(filled) = (points[ids[k]] - coons.eval(st.x(), st.y())).transpose();
-    if (++filled == kRefitBlock) flush();
-  }
-  if (filled > 0) flush();
-  for (int c = 0; c < m; ++c) {
-    const int i = 1 + c % mi, j = 1 + c / mi;
-    g0.row(c) = (grid(i, j) - coons.eval(grid.u(i), grid.v(j))).transpose();
-  }
-  const double lambda = kRefitRegularization * normal.diagonal().mean();
-  if (!(lambda > 0.0)) return false;  // no data reaches a node
-  normal.diagonal().array() += lambda;
-  // LDLT reads the lower triangle, the one accumulated.
-  const Eigen::MatrixXd g = normal.ldlt().solve(rhs + lambda * g0);
-  if (!g.allFinite()) return false;
-  Grid fitted = grid;
-  for (int c = 0; c < m; ++c) {
-    const int i = 1 + c % mi, j = 1 + c / mi;
-    fitted(i, j) = coons.eval(grid.u(i), grid.v(j)) + Vec3(g(c, 0), g(c, 1), g(c, 2));
-  }
-  leaf.surface = BaseSurface(leaf.surface.boundary(), fitted);
-  leaf.grid = std::move(fitted);
-  return true;
 }
 
 double median(std::vector<double> values) {
@@ -200,7 +127,7 @@ std::vector<int> refit_repaired_leaves(Result& result, const std::vector<Vec3>& 
     for (std::size_t i : members[id]) before.push_back((result.evaluate(result.u[i], result.v[i]) - points[i]).norm());
     const BaseSurface old_surface = leaf.surface;
     const Grid old_grid = leaf.grid;
-    if (!refit_leaf(leaf, data[id], points, result.u, result.v)) return;  // not refitted: its repaired points go back
+    if (!fit_grid_to_parameters(leaf, data[id], points, result.u, result.v)) return;  // not refitted: its repaired points go back
     for (std::size_t i : members[id]) after.push_back((result.evaluate(result.u[i], result.v[i]) - points[i]).norm());
     // A fit that would move the surface away from most of the leaf's points is not kept.
     if (median(after) > median(before)) {

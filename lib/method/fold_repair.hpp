@@ -32,6 +32,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "grid_fit.hpp"
 #include "result.hpp"
 #include "work_meter.hpp"
 
@@ -44,8 +45,6 @@ constexpr double kRepairTrust = 0.15;          ///< step towards the foot: at mo
 constexpr double kIsolationSpacings = 3.0;      ///< a far point's neighbourhood: at least this many spacings h ...
 constexpr double kIsolationShare = 0.25;        ///< ... isolated when it holds less than this share of a sheet's points ...
 constexpr double kSheetSpacings = 8.0;          ///< ... unless it lies in a missed sheet: most of its nearest points far too, all within this many spacings h
-constexpr double kRefitRegularization = 1e-2;   ///< Tikhonov weight of the refit, times the mean diagonal of its normal matrix
-constexpr int kMaxRefitNodes = 441;             ///< leaves with more interior grid nodes (a grid above 23 x 23) are not refitted (the fit costs m^2 per point)
 constexpr double kSuspectClusterShare = 0.75;    ///< an undecided point is repaired when at least this share of its neighbours are doubtful too
 constexpr double kBorderOffset = 0.4;           ///< ... and it is inside the cloud: its neighbours' centroid within this x their mean distance
 

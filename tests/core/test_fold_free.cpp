@@ -256,7 +256,7 @@ void hard_shapes_stay_within_their_bounds(void**) {
 }
 
 void sphere_cap_against_the_meshless_reference(void**) {
-  // 270 and 300 degrees of a sphere, open only at a small rim: no failure; the issue asks for
+  // 270, 300 and 330 degrees of a sphere, open only at a small rim: no failure; the issue asks for
   // no more folds than a meshless method (k = 12 inverse-distance weights, one solve) on the
   // same points. At 1, 1.25, 1.5 and 2 times the points. 270 degrees: at the three denser
   // ones the root surface did not wrap the sphere and a seam node shot 46 h off the cloud,
@@ -266,9 +266,12 @@ void sphere_cap_against_the_meshless_reference(void**) {
   // 6, 14, 9 and 9 against 8, 12, 11 and 13, since the root restarts from a 3 x 3 grid. One
   // or two more than the meshless method at 1.25 times the points: slivers on the diagonals
   // near the corners, where the small rim's corners pinch the map (one patch folds the same).
+  // 330 degrees (a head open only at its neck): no warm-up wrapped it (mean distance
+  // 0.15-0.17 after the repair had filled nearly every point, 0.17-9.9% folded); since the
+  // root starts from the meshless seed there, 8, 15, 16 and 12 against 8, 17, 16 and 14.
   // Asserted: at most 0.2% at every density, and no more than the meshless method over the
   // four together.
-  for (const char* name : {"sphere-cap", "sphere-cap-300"}) {
+  for (const char* name : {"sphere-cap", "sphere-cap-300", "sphere-cap-330"}) {
     std::size_t ours = 0, theirs = 0;
     for (double density : {1.0, 1.25, 1.5, 2.0}) {
       const FoldShape shape = dbs_folds::fold_shape(name, density);
@@ -277,7 +280,7 @@ void sphere_cap_against_the_meshless_reference(void**) {
       const dbs_folds::FoldCount reference = dbs_folds::fold_share(meshless.uv, shape.triangles);
       std::printf("%s x%.2f (%zu points): libdbs %zu folds (%.2f%%, %d levels, mean distance %.3g), meshless %zu (%.2f%%)\n", name, density, shape.count(), r.folds.folded,
                   100.0 * r.folds.share, r.result.levels, r.result.mean_distance, reference.folded, 100.0 * reference.share);
-      assert_true(reference.share <= 0.002);
+      assert_true(reference.share <= 0.0025);  // the meshless method: 0.04-0.20%
       assert_true(r.folds.share <= 0.002);
       assert_true(r.result.mean_distance <= 0.004);  // wrapped: the target is 0.0033-0.0034
       ours += r.folds.folded;

@@ -1,0 +1,30 @@
+// A start for the root surface from a meshless parameterization of its cloud. The root
+// evolves from the Coons patch of its boundary along that surface's normals; on a cloud that
+// closes over a small rim (a head open only at its neck, a sphere cap of 330 degrees) the
+// rays from the small disk the rim spans never reach the far side of the cloud, and however
+// the grids warm up the surface does not wrap it (330-degree cap: mean distance 0.15-0.17
+// against a target of 0.0034). A meshless map does not need the surface to reach anything:
+// each point the inverse-distance mean of its k nearest points' (u,v), the points nearest the
+// boundary's vertices fixed on the boundary (after Floater and Reimers, "Meshless
+// parameterization and surface reconstruction", 2001; one sparse solve), and the root's grid
+// fitted to the points at those (u,v) (grid_fit.hpp) lies on the cloud (the same cap: 0.0044).
+// It folds where the map does, so it is only a start: the evolution then projects grids from
+// it as from any other surface.
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "patch.hpp"
+
+namespace dbs {
+
+constexpr std::size_t kSeedPoints = 8192;  ///< most points of the root's subcloud the map is solved for (evenly strided)
+constexpr std::size_t kSeedNeighbours = 12;  ///< k of the inverse-distance weights
+
+/// Fits `patch`'s grid, resampled to grid x grid (3 <= grid <= 23), to the meshless map of
+/// its subcloud (points[patch.subcloud]) and its boundary. False, the patch untouched, when
+/// the subcloud has too few points, the map's system is singular (a point with no path of
+/// neighbours to the boundary) or the fit fails.
+bool seed_from_meshless_map(Patch& patch, const std::vector<Vec3>& points, int grid);
+
+}  // namespace dbs

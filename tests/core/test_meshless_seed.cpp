@@ -1,0 +1,101 @@
+// The meshless seed of the root surface (meshless_seed.hpp): on a sphere cap of 330 degrees,
+// which no evolution from the Coons patch of its small rim wraps, the seeded surface lies on
+// the cloud; the boundary stays exactly; too few points leave the patch untouched; the seed
+// does not depend on anything but its input.
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "boundary.hpp"
+#include "fold_shapes.hpp"
+#include "meshless_seed.hpp"
+#include "patch.hpp"
+#include "surface_projection.hpp"
+#include "core_test_support.hpp"  // last of the dbs headers
+
+using namespace dbs;
+
+namespace {
+
+std::vector<Vec3> points_of(const std::vector<double>& xyz) {
+  std::vector<Vec3> p;
+  for (std::size_t i = 0; i + 2 < xyz.size(); i += 3) p.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
+  return p;
+}
+
+struct Cap {
+  std::vector<Vec3> points;
+  Patch root;
+};
+
+Cap cap(double degrees) {
+  const dbs_folds::FoldShape shape = dbs_folds::sphere_cap(0.0, degrees);
+  Cap c{points_of(shape.xyz), Patch{BaseSurface(Boundary(points_of(shape.bottom), points_of(shape.right), points_of(shape.top), points_of(shape.left)))}};
+  c.root.rect = Rect{0.0, 0.0, 1.0, 1.0};
+  for (std::size_t i = 0; i < c.points.size(); ++i) c.root.subcloud.push_back(i);
+  return c;
+}
+
+double mean_distance(const BaseSurface& surface, const std::vector<Vec3>& points) {
+  const SurfaceProjector projector(surface);
+  double sum = 0.0;
+  for (const Vec3& q : points) sum += projector.project(q).distance;
+  return sum / static_cast<double>(points.size());
+}
+
+void seed_wraps_a_cap_closing_over_a_small_rim(void**) {
+  // The driver seeds the root's first grid (5 x 5), which follows a sphere only coarsely; an
+  // 11 x 11 seed lies on it.
+  Cap c = cap(330.0), fine = cap(330.0);
+  const double coons = mean_distance(c.root.surface, c.points);
+  assert_true(seed_from_meshless_map(c.root, c.points, 5));
+  assert_true(seed_from_meshless_map(fine.root, fine.points, 11));
+  const double seeded = mean_distance(c.root.surface, c.points), seeded_fine = mean_distance(fine.root.surface, fine.points);
+  std::printf("330-degree cap: mean distance %.3g from the Coons patch, %.3g from the seed (5 x 5), %.3g (11 x 11)\n", coons, seeded, seeded_fine);
+  assert_true(coons > 0.5);
+  assert_true(seeded < 0.1);
+  assert_true(seeded_fine < 0.01);
+  assert_int_equal(c.root.grid.nu, 5);
+  assert_int_equal(c.root.grid.nv, 5);
+  // The boundary is the patch's: the surface interpolates it exactly.
+  const Boundary& b = c.root.surface.boundary();
+  for (double s : {0.0, 0.3, 1.0}) {
+    assert_true(c.root.surface.eval(s, 0.0) == b.bottom().at(s));
+    assert_true(c.root.surface.eval(0.0, s) == b.left().at(s));
+  }
+}
+
+void seed_is_deterministic(void**) {
+  Cap a = cap(300.0), b = cap(300.0);
+  assert_true(seed_from_meshless_map(a.root, a.points, 7));
+  assert_true(seed_from_meshless_map(b.root, b.points, 7));
+  for (int j = 0; j < 7; ++j)
+    for (int i = 0; i < 7; ++i) assert_true(a.root.grid(i, j) == b.root.grid(i, j));
+}
+
+void too_few_points_leave_the_patch_untouched(void**) {
+  Cap c = cap(270.0);
+  c.root.subcloud.resize(20);
+  c.root.grid = c.root.surface.sample(4, 4);
+  const Grid before = c.root.grid;
+  const Vec3 middle = c.root.surface.eval(0.5, 0.5);
+  assert_false(seed_from_meshless_map(c.root, c.points, 5));
+  assert_int_equal(c.root.grid.nu, 4);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) assert_true(c.root.grid(i, j) == before(i, j));
+  assert_true(c.root.surface.eval(0.5, 0.5) == middle);
+  // A grid below 3 x 3 has no interior node to fit.
+  Cap d = cap(270.0);
+  assert_false(seed_from_meshless_map(d.root, d.points, 2));
+}
+
+}  // namespace
+
+int main() {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(seed_wraps_a_cap_closing_over_a_small_rim),
+      cmocka_unit_test(seed_is_deterministic),
+      cmocka_unit_test(too_few_points_leave_the_patch_untouched),
+  };
+  return cmocka_run_group_tests_name("meshless_seed", tests, nullptr, nullptr);
+}
