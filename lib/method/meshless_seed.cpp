@@ -44,11 +44,21 @@ bool seed_from_meshless_map(Patch& patch, const std::vector<Vec3>& points, int g
   const CloudIndex index(sample);
   const Boundary& boundary = patch.surface.boundary();
 
-  // The boundary taken into the cloud: the sample point nearest each of its vertices.
+  // The boundary taken into the cloud: the sample point nearest each of its vertices. The map
+  // needs the boundary on the cloud (its fixed points are boundary points).
   std::vector<char> fixed(m, 0);
   std::vector<double> u(m, 0.0), v(m, 0.0);
-  for (int side = 0; side < 4; ++side)
-    for (const Vec3& q : boundary.side(static_cast<Side>(side)).points()) fixed[index.nearest(q)] = 1;
+  const double reach = kSeedBoundarySpacings * cloud_spacing(index);
+  std::size_t vertices = 0, on_cloud = 0;
+  for (int side = 0; side < 4; ++side) {
+    for (const Vec3& q : boundary.side(static_cast<Side>(side)).points()) {
+      const std::size_t nearest = index.nearest(q);
+      fixed[nearest] = 1;
+      ++vertices;
+      on_cloud += (sample[nearest] - q).norm() <= reach;
+    }
+  }
+  if (!(static_cast<double>(on_cloud) >= kSeedBoundaryShare * static_cast<double>(vertices))) return false;
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), 2);
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(m * (kSeedNeighbours + 1));

@@ -20,11 +20,15 @@ namespace dbs {
 
 constexpr std::size_t kSeedPoints = 8192;  ///< most points of the root's subcloud the map is solved for (evenly strided)
 constexpr std::size_t kSeedNeighbours = 12;  ///< k of the inverse-distance weights
+constexpr double kSeedBoundarySpacings = 3.0;  ///< a boundary vertex is on the cloud within this many spacings of the sample ...
+constexpr double kSeedBoundaryShare = 0.9;     ///< ... and the map is solved only when this share of them is
 
 /// Fits `patch`'s grid, resampled to grid x grid (3 <= grid <= 23), to the meshless map of
 /// its subcloud (points[patch.subcloud]) and its boundary. False, the patch untouched, when
-/// the subcloud has too few points, the map's system is singular (a point with no path of
-/// neighbours to the boundary) or the fit fails.
+/// the subcloud has too few points, the boundary does not lie on the cloud (fewer than
+/// kSeedBoundaryShare of its vertices within kSeedBoundarySpacings of a sample point), the
+/// map's system is singular (a point with no path of neighbours to the boundary) or the fit
+/// fails.
 bool seed_from_meshless_map(Patch& patch, const std::vector<Vec3>& points, int grid);
 
 }  // namespace dbs

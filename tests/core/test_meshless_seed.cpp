@@ -1,6 +1,7 @@
 // The meshless seed of the root surface (meshless_seed.hpp): on a sphere cap of 330 degrees,
 // which no evolution from the Coons patch of its small rim wraps, the seeded surface lies on
-// the cloud; the boundary stays exactly; too few points leave the patch untouched; the seed
+// the cloud; the boundary stays exactly; too few points or a boundary off the cloud leave the
+// patch untouched; the seed
 // does not depend on anything but its input.
 #include <cmath>
 #include <cstdio>
@@ -84,6 +85,11 @@ void too_few_points_leave_the_patch_untouched(void**) {
   for (int j = 0; j < 4; ++j)
     for (int i = 0; i < 4; ++i) assert_true(c.root.grid(i, j) == before(i, j));
   assert_true(c.root.surface.eval(0.5, 0.5) == middle);
+  // A boundary off its cloud gives the map no boundary points to fix: refused (a cloud moved
+  // 3 units, 100 spacings, away from its rim).
+  Cap moved = cap(270.0);
+  for (Vec3& q : moved.points) q.z() += 3.0;
+  assert_false(seed_from_meshless_map(moved.root, moved.points, 5));
   // A grid below 3 x 3 has no interior node to fit.
   Cap d = cap(270.0);
   assert_false(seed_from_meshless_map(d.root, d.points, 2));
