@@ -172,9 +172,19 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
 }
 
 void evolve_patch_with_restart(Patch& patch, const std::vector<Vec3>& points, const DirectedProjector& projector, const EvolveSettings& settings) {
+  // The start without the subcloud (the root's is the whole cloud): each candidate borrows
+  // the patch's for its evolution.
+  std::vector<std::size_t> subcloud;
+  subcloud.swap(patch.subcloud);
   const Patch start = patch;
+  subcloud.swap(patch.subcloud);
   evolve_patch(patch, points, projector, settings);
   auto far_above = [&] { return !patch.accurate && patch.error > kCoarseRestartFactor * settings.accuracy; };
+  auto evolve_from = [&](Patch& candidate, const EvolveSettings& candidate_settings) {
+    candidate.subcloud.swap(patch.subcloud);
+    evolve_patch(candidate, points, projector, candidate_settings);
+    candidate.subcloud.swap(patch.subcloud);
+  };
   // The work of both counts (iterations, damped nodes, Ceres); the kept one's surface and
   // figures stand.
   auto keep_better = [&](Patch& other) {
@@ -184,23 +194,27 @@ void evolve_patch_with_restart(Patch& patch, const std::vector<Vec3>& points, co
     kept.damped_nodes += dropped.damped_nodes;
     kept.refined_curves += dropped.refined_curves;
     kept.ceres_iterations += dropped.ceres_iterations;
-    if (&kept == &other) patch = std::move(other);
+    if (&kept != &other) return;
+    other.subcloud.swap(patch.subcloud);
+    patch = std::move(other);
   };
   if (!far_above()) return;
   if (settings.warm_up_grid > 0 && settings.initial_grid > kMinWarmUpGrid + 1) {
     Patch coarse = start;
     EvolveSettings from_coarse = settings;
     from_coarse.warm_up_grid = kMinWarmUpGrid;
-    evolve_patch(coarse, points, projector, from_coarse);
+    evolve_from(coarse, from_coarse);
     keep_better(coarse);
   }
-  if (!far_above()) return;
-  if (!unreached_inside(patch, points, settings)) return;
+  if (!far_above() || !unreached_inside(patch, points, settings)) return;
   Patch seeded = start;
-  if (!seed_from_meshless_map(seeded, points, settings.initial_grid)) return;
+  seeded.subcloud.swap(patch.subcloud);
+  const bool seeds = seed_from_meshless_map(seeded, points, settings.initial_grid);
+  seeded.subcloud.swap(patch.subcloud);
+  if (!seeds) return;
   EvolveSettings from_seed = settings;
   from_seed.warm_up_grid = 0;  // the seed lies on the cloud already
-  evolve_patch(seeded, points, projector, from_seed);
+  evolve_from(seeded, from_seed);
   keep_better(seeded);
 }
 

@@ -23,8 +23,9 @@ struct EvolveSettings {
   /// initial_grid - 1, on every patch. The root starts from the Coons patch of its boundary,
   /// which can lie far from the cloud (a sphere cap closing over a small rim): with 5 x 5
   /// nodes at once its nodes cross, the pleat guard holds most of them back and the surface
-  /// never wraps the cloud (270-degree cap, one patch: mean distance 0.017-0.047 at three
-  /// densities against 0.004-0.005 from a 4 x 4 start, 3-8% folded against 0.04-0.11%). A
+  /// never wraps the cloud (270-degree cap, one patch without the repair: mean distance
+  /// 0.017-0.047 at three densities against 0.004-0.005 from a 4 x 4 start, 3.2-8.0% folded
+  /// against 0.04-0.11%). A
   /// child starts from its parent's surface sampled on its quarter; a coarser projection
   /// first smooths that sample towards its subcloud (on dbs-bench-folds: fewer folds on
   /// five of the six shapes).
@@ -59,7 +60,7 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
 /// evolve_patch for the root, which starts from the Coons patch of its boundary; where it
 /// ends far above the target (more than kCoarseRestartFactor times it), again from other
 /// starts, each kept where its error is below kCoarseRestartGain times the best so far (the
-/// work of all counts in the iterations):
+/// work of all counts in the iterations, damped nodes and Ceres figures):
 /// - warmed up from the coarsest grid (3 x 3). On a cloud closing over a small rim (a
 ///   300-degree sphere cap) grids warmed up from one size below the first cross over the rim
 ///   and never wrap it (mean distance 0.17-0.28), while a single interior node first lifts the
@@ -67,9 +68,10 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
 ///   Where both starts wrap the cloud their errors differ by a few percent and the finer
 ///   start is kept (the coarse one, 2-15% nearer on the mushroom and the cone, folds more
 ///   after subdivision);
-/// - still far above: the meshless seed (meshless_seed.hpp), for a cloud closing over a
-///   smaller rim still (330 degrees: 0.74-0.83 from either warm-up, 0.004-0.019 from the
-///   seed).
+/// - still far above, with most of the sample far from the surface with feet inside the
+///   domain (kUnreachedShare; points beyond the boundary have clamped feet): the meshless
+///   seed (meshless_seed.hpp), for a cloud closing over a smaller rim still (330 degrees: the
+///   root's error 0.74-0.83 from either warm-up, 0.004-0.019 from the seed).
 void evolve_patch_with_restart(Patch& patch, const std::vector<Vec3>& points, const DirectedProjector& projector, const EvolveSettings& settings);
 
 /// Mean and maximum distance of points[indices[k]] (k strided by `stride`) to `surface`;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include <Eigen/Sparse>
@@ -14,8 +15,16 @@ namespace dbs {
 
 namespace {
 
-/// The (u,v) of the boundary position nearest q: sides bottom (s,0), right (1,s), top (s,1),
-/// left (0,s), s the arc-length fraction along the side.
+/// splitmix64's finalizer: consecutive k spread over all 64 bits.
+std::uint64_t mixed(std::uint64_t k) {
+  k += 0x9e3779b97f4a7c15ULL;
+  k = (k ^ (k >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  k = (k ^ (k >> 27)) * 0x94d049bb133111ebULL;
+  return k ^ (k >> 31);
+}
+
+/// The local (u,v) of the boundary position nearest q: sides bottom (s,0), right (1,s), top
+/// (s,1), left (0,s), s the arc-length fraction along the side.
 Vec2 boundary_parameters(const Boundary& boundary, const Vec3& q) {
   static const Vec2 origin[4] = {Vec2(0, 0), Vec2(1, 0), Vec2(0, 1), Vec2(0, 0)};
   static const Vec2 along[4] = {Vec2(1, 0), Vec2(0, 1), Vec2(1, 0), Vec2(0, 1)};
@@ -32,40 +41,116 @@ Vec2 boundary_parameters(const Boundary& boundary, const Vec3& q) {
   return uv;
 }
 
+/// Each sample point's kSeedNeighbours nearest others (coincident ones included) and their
+/// distances.
+struct Neighbours {
+  std::vector<std::vector<std::size_t>> index;
+  std::vector<std::vector<double>> distance;
+};
+
+Neighbours nearest_others(const CloudIndex& index, const std::vector<Vec3>& sample) {
+  Neighbours out;
+  out.index.resize(sample.size());
+  out.distance.resize(sample.size());
+  std::vector<std::size_t> near;
+  std::vector<double> d2;
+  for (std::size_t i = 0; i < sample.size(); ++i) {
+    index.knn(sample[i], kSeedNeighbours + 1, near, d2);
+    for (std::size_t k = 0; k < near.size() && out.index[i].size() < kSeedNeighbours; ++k) {
+      if (near[k] == i) continue;
+      out.index[i].push_back(near[k]);
+      out.distance[i].push_back(std::sqrt(d2[k]));
+    }
+  }
+  return out;
+}
+
+/// The points whose (u,v) the map determines: the fixed ones and, by a path of neighbours,
+/// those that reach one (a clump of points that are only each other's neighbours would
+/// leave its block of the system without a fixed value).
+std::vector<char> reaching_fixed(const Neighbours& near, const std::vector<char>& fixed) {
+  const std::size_t m = fixed.size();
+  std::vector<std::vector<std::size_t>> referenced_by(m);
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t j : near.index[i]) referenced_by[j].push_back(i);
+  std::vector<char> reached = fixed;
+  std::vector<std::size_t> queue;
+  for (std::size_t i = 0; i < m; ++i)
+    if (fixed[i]) queue.push_back(i);
+  while (!queue.empty()) {
+    const std::size_t j = queue.back();
+    queue.pop_back();
+    for (std::size_t i : referenced_by[j]) {
+      if (reached[i]) continue;
+      reached[i] = 1;
+      queue.push_back(i);
+    }
+  }
+  return reached;
+}
+
 }  // namespace
 
 bool seed_from_meshless_map(Patch& patch, const std::vector<Vec3>& points, int grid) {
   const std::size_t n = patch.subcloud.size();
-  if (n < 4 * kSeedNeighbours || grid < 3) return false;
-  const std::size_t stride = (n + kSeedPoints - 1) / kSeedPoints;
+  if (n < 4 * kSeedNeighbours || grid < 3 || grid > kMaxSeedGrid) return false;
+  // About kSeedPoints of them, chosen by a hash of their position in the subcloud: a stride
+  // would sample a scan stored row by row in stripes (every other point of each row), and
+  // the map over such a sample spreads along the rows only.
+  const std::uint64_t keep_one_in = (n + kSeedPoints - 1) / kSeedPoints;
   std::vector<Vec3> sample;
-  for (std::size_t k = 0; k < n; k += stride) sample.push_back(points[patch.subcloud[k]]);
+  for (std::size_t k = 0; k < n; ++k)
+    if (keep_one_in == 1 || mixed(k) % keep_one_in == 0) sample.push_back(points[patch.subcloud[k]]);
+  if (sample.size() < 4 * kSeedNeighbours) return false;
   const std::size_t m = sample.size();
   const CloudIndex index(sample);
-  const Boundary& boundary = patch.surface.boundary();
+  const Neighbours near = nearest_others(index, sample);
+  // The sample's spacing: the mean distance to the nearest distinct point.
+  double spacing = 0.0;
+  std::size_t spaced = 0;
+  for (const std::vector<double>& d : near.distance) {
+    const auto distinct = std::find_if(d.begin(), d.end(), [](double x) { return x > 0.0; });
+    if (distinct == d.end()) continue;
+    spacing += *distinct;
+    ++spaced;
+  }
+  if (spaced == 0) return false;  // every point has only coincident neighbours
+  spacing /= static_cast<double>(spaced);
 
-  // The boundary taken into the cloud: the sample point nearest each of its vertices. The map
-  // needs the boundary on the cloud (its fixed points are boundary points).
+  // The boundary taken into the cloud: each side walked at the sample's spacing, the sample
+  // point nearest each position fixed at its boundary parameters where it lies within
+  // kSeedBoundarySpacings. The map needs the boundary on the cloud (its fixed points are
+  // boundary points): with fewer than kSeedBoundaryShare of the positions on it, no seed.
+  const Boundary& boundary = patch.surface.boundary();
   std::vector<char> fixed(m, 0);
-  std::vector<double> u(m, 0.0), v(m, 0.0);
-  const double reach = kSeedBoundarySpacings * cloud_spacing(index);
-  std::size_t vertices = 0, on_cloud = 0;
+  std::size_t positions = 0, on_cloud = 0;
   for (int side = 0; side < 4; ++side) {
-    for (const Vec3& q : boundary.side(static_cast<Side>(side)).points()) {
+    const Polyline& line = boundary.side(static_cast<Side>(side));
+    const std::size_t steps = static_cast<std::size_t>(std::clamp(std::ceil(line.length() / spacing), 1.0, static_cast<double>(m)));
+    for (std::size_t k = 0; k <= steps; ++k) {
+      const Vec3 q = line.at(static_cast<double>(k) / static_cast<double>(steps));
       const std::size_t nearest = index.nearest(q);
+      ++positions;
+      if (!((sample[nearest] - q).norm() <= kSeedBoundarySpacings * spacing)) continue;
       fixed[nearest] = 1;
-      ++vertices;
-      on_cloud += (sample[nearest] - q).norm() <= reach;
+      ++on_cloud;
     }
   }
-  if (!(static_cast<double>(on_cloud) >= kSeedBoundaryShare * static_cast<double>(vertices))) return false;
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), 2);
+  if (!(static_cast<double>(on_cloud) >= kSeedBoundaryShare * static_cast<double>(positions))) return false;
+
+  // One row per point the map determines (kept): fixed, or the inverse-distance mean of its
+  // kept neighbours, a coincident one weighing as one at a hundredth of the spacing.
+  const std::vector<char> kept = reaching_fixed(near, fixed);
+  std::vector<Eigen::Index> row_of(m, -1);
+  Eigen::Index rows = 0;
+  for (std::size_t i = 0; i < m; ++i)
+    if (kept[i]) row_of[i] = rows++;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(rows, 2);
   std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(m * (kSeedNeighbours + 1));
-  std::vector<std::size_t> near;
-  std::vector<double> d2;
+  entries.reserve(static_cast<std::size_t>(rows) * (kSeedNeighbours + 1));
   for (std::size_t i = 0; i < m; ++i) {
-    const auto row = static_cast<Eigen::Index>(i);
+    const Eigen::Index row = row_of[i];
+    if (row < 0) continue;
     entries.emplace_back(row, row, 1.0);
     if (fixed[i]) {
       const Vec2 uv = boundary_parameters(boundary, sample[i]);
@@ -73,40 +158,36 @@ bool seed_from_meshless_map(Patch& patch, const std::vector<Vec3>& points, int g
       rhs(row, 1) = uv.y();
       continue;
     }
-    index.knn(sample[i], kSeedNeighbours + 1, near, d2);
-    // Inverse-distance weights; a coincident neighbour weighs as one at a hundredth of the
-    // nearest distinct one.
-    double nearest = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < near.size(); ++k)
-      if (near[k] != i && d2[k] > 0.0) nearest = std::min(nearest, std::sqrt(d2[k]));
-    if (!std::isfinite(nearest)) return false;  // all its neighbours coincide with it
     double sum = 0.0;
-    std::vector<std::pair<std::size_t, double>> weights;
-    for (std::size_t k = 0; k < near.size() && weights.size() < kSeedNeighbours; ++k) {
-      if (near[k] == i) continue;
-      const double w = 1.0 / (d2[k] > 0.0 ? std::sqrt(d2[k]) : 1e-2 * nearest);
-      weights.emplace_back(near[k], w);
-      sum += w;
+    for (std::size_t k = 0; k < near.index[i].size(); ++k)
+      if (kept[near.index[i][k]]) sum += 1.0 / std::max(near.distance[i][k], 1e-2 * spacing);
+    for (std::size_t k = 0; k < near.index[i].size(); ++k) {
+      const std::size_t j = near.index[i][k];
+      if (kept[j]) entries.emplace_back(row, row_of[j], -1.0 / std::max(near.distance[i][k], 1e-2 * spacing) / sum);
     }
-    for (const auto& [j, w] : weights) entries.emplace_back(row, static_cast<Eigen::Index>(j), -w / sum);
   }
-  Eigen::SparseMatrix<double> matrix(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(m));
+  Eigen::SparseMatrix<double> matrix(rows, rows);
   matrix.setFromTriplets(entries.begin(), entries.end());
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> solver;
   solver.compute(matrix);
   if (solver.info() != Eigen::Success) return false;
   const Eigen::MatrixXd solution = solver.solve(rhs);
   if (solver.info() != Eigen::Success || !solution.allFinite()) return false;
-  for (std::size_t i = 0; i < m; ++i) {
-    u[i] = std::clamp(solution(static_cast<Eigen::Index>(i), 0), 0.0, 1.0);
-    v[i] = std::clamp(solution(static_cast<Eigen::Index>(i), 1), 0.0, 1.0);
-  }
 
-  Patch seeded = patch;
-  seeded.grid = seeded.surface.sample(grid, grid);
+  // The grid fitted to the kept points at their (u,v), mapped onto the patch's rectangle.
+  std::vector<std::size_t> ids;
+  std::vector<double> u(m, 0.0), v(m, 0.0);
+  for (std::size_t i = 0; i < m; ++i) {
+    if (row_of[i] < 0) continue;
+    const Vec2 uv = patch.rect.to_global(std::clamp(solution(row_of[i], 0), 0.0, 1.0), std::clamp(solution(row_of[i], 1), 0.0, 1.0));
+    u[i] = uv.x();
+    v[i] = uv.y();
+    ids.push_back(i);
+  }
+  Patch seeded{patch.surface};
+  seeded.rect = patch.rect;
+  seeded.grid = patch.surface.sample(grid, grid);
   seeded.surface = BaseSurface(boundary, seeded.grid);
-  std::vector<std::size_t> ids(m);
-  for (std::size_t i = 0; i < m; ++i) ids[i] = i;
   if (!fit_grid_to_parameters(seeded, ids, sample, u, v)) return false;
   patch.surface = std::move(seeded.surface);
   patch.grid = std::move(seeded.grid);

@@ -29,12 +29,15 @@ constexpr double kDepartureTolerance = 1.0;
 
 /// Appends to input.fixed the free interior nodes whose move by offsets[k] along
 /// input.directions[k] takes them more than `tolerance` (cloud units) farther from their
-/// nearest point of projector.index(); returns how many.
+/// nearest point of projector.index(); returns how many. Error(InvalidArgument) for offsets
+/// or directions not one per node, Error(OutOfRange) for a fixed index beyond the nodes.
 std::size_t hold_departing_nodes(const DirectedProjector& projector, CurveProjectionInput& input, const std::vector<double>& offsets, double tolerance);
 
 /// solve_curve (curve_refinement.hpp), the nodes it would send off the cloud held and the
 /// curve solved again, until no node departs (at most a few rounds; `input.fixed` keeps the
-/// held nodes). `out_held`, when given, is added the number of nodes held.
+/// held nodes). `out_held`, when given, is added the number of nodes held. The solve of each
+/// round (the Ceres refinement too, when settings.enabled) is judged, so a held node stays
+/// where it was in every later round.
 std::vector<double> solve_curve_near(const DirectedProjector& projector, CurveProjectionInput& input, double gamma, const RefinementSettings& settings, RefinementCounts* counts = nullptr,
                                      std::size_t* out_held = nullptr);
 

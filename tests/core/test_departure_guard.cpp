@@ -1,7 +1,7 @@
 // The departure guard of the curve projection (departure_guard.hpp): a node sitting on the
 // cloud whose ray meets a dense clump far off the sheet is held on the sheet, and its
 // neighbours stay there too; a node approaching the cloud or lying over a hole is never held;
-// fixed nodes stay exactly put.
+// fixed nodes stay exactly put; sizes that do not match are refused.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -103,6 +103,13 @@ void departure_is_judged_against_the_tolerance(void**) {
   assert_int_equal(hold_departing_nodes(projector, in, offsets, 1.0), 1);
   assert_int_equal(in.fixed.size(), 2);
   assert_int_equal(in.fixed.back(), 10);
+  // Sizes that do not match the nodes are refused, the input untouched.
+  offsets.pop_back();
+  assert_true(core_test::throws(ErrorCode::InvalidArgument, [&] { hold_departing_nodes(projector, in, offsets, 1.0); }));
+  offsets.push_back(0.0);
+  in.fixed.push_back(in.nodes.size());
+  assert_true(core_test::throws(ErrorCode::OutOfRange, [&] { hold_departing_nodes(projector, in, offsets, 1.0); }));
+  assert_int_equal(in.fixed.size(), 3);
 }
 
 }  // namespace
