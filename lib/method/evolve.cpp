@@ -32,27 +32,7 @@ constexpr double kCoarseRestartFactor = 10.0;
 /// ... which is kept where its error is below this times the first one's (the 300-degree cap:
 /// 0.03-0.18; where both wrap the cloud: 0.70-0.99).
 constexpr double kCoarseRestartGain = 0.5;
-/// The meshless seed is tried only where at least this share of the error sample lies far
-/// (kCoarseRestartFactor x the target) from the surface with its foot inside the domain: a
-/// cloud the surface did not reach (330-degree cap: 90-94%; mushroom and tall dome about
-/// 25%). Points beyond the boundary (a cloud larger than its boundary, or far from it) have
-/// their feet clamped onto the domain's edge, and a map fixed on the boundary cannot place
-/// them: fitted to them, the seed bends away from the points the surface already fitted.
-constexpr double kUnreachedShare = 0.5;
 
-/// Whether at least kUnreachedShare of patch's error sample lies far from its surface with
-/// feet inside the domain.
-bool unreached_inside(const Patch& patch, const std::vector<Vec3>& points, const EvolveSettings& settings) {
-  const std::size_t stride = std::max<std::size_t>(1, patch.subcloud.size() / std::max<std::size_t>(settings.error_sample, 1));
-  const SurfaceProjector projector(patch.surface, FootPrecision::Distance);
-  std::vector<char> unreached((patch.subcloud.size() + stride - 1) / stride, 0);
-  parallel_for(unreached.size(), settings.threads, [&](std::size_t k) {
-    const Foot foot = projector.project(points[patch.subcloud[k * stride]]);
-    unreached[k] = foot.inside && foot.distance > kCoarseRestartFactor * settings.accuracy;
-  });
-  const std::size_t count = static_cast<std::size_t>(std::count(unreached.begin(), unreached.end(), 1));
-  return static_cast<double>(count) >= kUnreachedShare * static_cast<double>(unreached.size());
-}
 
 /// Grid projections of `patch` at one grid size: where the pleat guard held nodes back, the
 /// surface moves on from where it got to, along its new normals, up to kMaxDampedSteps
@@ -206,7 +186,7 @@ void evolve_patch_with_restart(Patch& patch, const std::vector<Vec3>& points, co
     evolve_from(coarse, from_coarse);
     keep_better(coarse);
   }
-  if (!far_above() || !unreached_inside(patch, points, settings)) return;
+  if (!far_above()) return;
   Patch seeded = start;
   seeded.subcloud.swap(patch.subcloud);
   const bool seeds = seed_from_meshless_map(seeded, points, settings.initial_grid);

@@ -68,10 +68,10 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
 ///   Where both starts wrap the cloud their errors differ by a few percent and the finer
 ///   start is kept (the coarse one, 2-15% nearer on the mushroom and the cone, folds more
 ///   after subdivision);
-/// - still far above, with most of the sample far from the surface with feet inside the
-///   domain (kUnreachedShare; points beyond the boundary have clamped feet): the meshless
-///   seed (meshless_seed.hpp), for a cloud closing over a smaller rim still (330 degrees: the
-///   root's error 0.74-0.83 from either warm-up, 0.004-0.019 from the seed).
+/// - still far above: the meshless seed (meshless_seed.hpp; only with the boundary on the
+///   cloud and its border), for a cloud closing over a smaller rim still (330 degrees: the
+///   root's error 0.74-0.83 from either warm-up, 0.003-0.019 from the seed; 300 degrees at
+///   10,000 points: 0.24 and 0.18 from the warm-ups, 0.0045 from the seed).
 void evolve_patch_with_restart(Patch& patch, const std::vector<Vec3>& points, const DirectedProjector& projector, const EvolveSettings& settings);
 
 /// Mean and maximum distance of points[indices[k]] (k strided by `stride`) to `surface`;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
 
@@ -65,6 +66,31 @@ Neighbours nearest_others(const CloudIndex& index, const std::vector<Vec3>& samp
   return out;
 }
 
+/// The share of the kSeedNeighbours sample points nearest a boundary position q on the
+/// minority side of the boundary there: the plane through q spanned by the boundary's
+/// tangent and the cloud's normal (PCA of those points) parts them; on the cloud's border
+/// they all lie on one side (0), where the boundary crosses the cloud about half on each.
+double share_beyond(const CloudIndex& index, const std::vector<Vec3>& sample, const Vec3& q, const Vec3& tangent) {
+  std::vector<std::size_t> near;
+  std::vector<double> d2;
+  index.knn(q, kSeedNeighbours, near, d2);
+  if (near.size() < 3) return 0.0;
+  Vec3 centre = Vec3::Zero();
+  for (std::size_t j : near) centre += sample[j];
+  centre /= static_cast<double>(near.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (std::size_t j : near) covariance += (sample[j] - centre) * (sample[j] - centre).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> pca(covariance);
+  const Vec3 across = tangent.cross(Vec3(pca.eigenvectors().col(0)));
+  std::size_t plus = 0, minus = 0;
+  for (std::size_t j : near) {
+    const double side = (sample[j] - q).dot(across);
+    plus += side > 0.0;
+    minus += side < 0.0;
+  }
+  return static_cast<double>(std::min(plus, minus)) / static_cast<double>(near.size());
+}
+
 /// The points whose (u,v) the map determines: the fixed ones and, by a path of neighbours,
 /// those that reach one (a clump of points that are only each other's neighbours would
 /// leave its block of the system without a fixed value).
@@ -121,22 +147,30 @@ bool seed_from_meshless_map(Patch& patch, const std::vector<Vec3>& points, int g
   // point nearest each position fixed at its boundary parameters where it lies within
   // kSeedBoundarySpacings. The map needs the boundary on the cloud (its fixed points are
   // boundary points): with fewer than kSeedBoundaryShare of the positions on it, no seed.
+  // The map also needs the boundary to be the cloud's border: where it crosses the cloud
+  // (a cloud larger than its boundary), points beyond it have no (u,v) to take.
   const Boundary& boundary = patch.surface.boundary();
   std::vector<char> fixed(m, 0);
   std::size_t positions = 0, on_cloud = 0;
+  std::vector<double> beyond;
   for (int side = 0; side < 4; ++side) {
     const Polyline& line = boundary.side(static_cast<Side>(side));
     const std::size_t steps = static_cast<std::size_t>(std::clamp(std::ceil(line.length() / spacing), 1.0, static_cast<double>(m)));
     for (std::size_t k = 0; k <= steps; ++k) {
-      const Vec3 q = line.at(static_cast<double>(k) / static_cast<double>(steps));
+      const double s = static_cast<double>(k) / static_cast<double>(steps);
+      const Vec3 q = line.at(s);
       const std::size_t nearest = index.nearest(q);
       ++positions;
       if (!((sample[nearest] - q).norm() <= kSeedBoundarySpacings * spacing)) continue;
       fixed[nearest] = 1;
       ++on_cloud;
+      beyond.push_back(share_beyond(index, sample, q, line.tangent(s)));
     }
   }
   if (!(static_cast<double>(on_cloud) >= kSeedBoundaryShare * static_cast<double>(positions))) return false;
+  const auto middle = beyond.begin() + static_cast<std::ptrdiff_t>(beyond.size() / 2);
+  std::nth_element(beyond.begin(), middle, beyond.end());
+  if (!(*middle <= kSeedBeyondShare)) return false;
 
   // One row per point the map determines (kept): fixed, or the inverse-distance mean of its
   // kept neighbours, a coincident one weighing as one at a hundredth of the spacing.

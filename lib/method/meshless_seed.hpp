@@ -24,6 +24,7 @@ constexpr std::size_t kSeedPoints = 8192;  ///< most points of the root's subclo
 constexpr std::size_t kSeedNeighbours = 12;  ///< k of the inverse-distance weights
 constexpr double kSeedBoundarySpacings = 3.0;  ///< a boundary position is on the cloud within this many spacings of the sample ...
 constexpr double kSeedBoundaryShare = 0.9;     ///< ... and the map is solved only when this share of them is
+constexpr double kSeedBeyondShare = 0.2;      ///< ... and the median share of the points near it beyond the boundary is at most this (0 on a border, 1/2 across a cloud)
 constexpr int kMaxSeedGrid = 23;               ///< the largest grid the fit takes (grid_fit.hpp: kMaxRefitNodes)
 
 /// Fits `patch`'s grid, resampled to grid x grid (3 <= grid <= kMaxSeedGrid), to the meshless
@@ -33,7 +34,9 @@ constexpr int kMaxSeedGrid = 23;               ///< the largest grid the fit tak
 /// points with no path of neighbours to a fixed one (a detached clump) are left out of the
 /// map and the fit. False, the patch untouched, when the subcloud has too few points, they
 /// all coincide, the boundary does not lie on the cloud (fewer than kSeedBoundaryShare of
-/// its positions within reach), the sparse solve fails or the fit fails. Throws nothing but
+/// its positions within reach) or is not its border (a median share above kSeedBeyondShare
+/// of the points near its positions lie beyond it: a cloud larger than its boundary), the
+/// sparse solve fails or the fit fails. Throws nothing but
 /// std::bad_alloc.
 bool seed_from_meshless_map(Patch& patch, const std::vector<Vec3>& points, int grid);
 

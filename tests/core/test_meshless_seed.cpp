@@ -88,6 +88,37 @@ void detached_clump_and_duplicates_are_left_out(void**) {
   assert_true(b < 2.0 * a);
 }
 
+/// A jittered 0.02-pitch grid over [lo, hi]^2 in z = 0, and the patch of the unit square.
+Cap square_cloud(double lo, double hi) {
+  std::vector<Vec3> sides[4];
+  for (int k = 0; k <= 10; ++k) {
+    const double t = k / 10.0;
+    sides[0].emplace_back(t, 0.0, 0.0);
+    sides[1].emplace_back(1.0, t, 0.0);
+    sides[2].emplace_back(t, 1.0, 0.0);
+    sides[3].emplace_back(0.0, t, 0.0);
+  }
+  Cap c{{}, Patch{BaseSurface(Boundary(sides[0], sides[1], sides[2], sides[3]))}};
+  c.root.rect = Rect{0.0, 0.0, 1.0, 1.0};
+  const int count = static_cast<int>(std::lround((hi - lo) / 0.02));
+  for (int j = 0; j <= count; ++j)
+    for (int i = 0; i <= count; ++i) c.points.emplace_back(lo + 0.02 * i + 0.003 * std::sin(7.0 * j + i), lo + 0.02 * j + 0.003 * std::cos(5.0 * i + j), 0.0);
+  for (std::size_t i = 0; i < c.points.size(); ++i) c.root.subcloud.push_back(i);
+  return c;
+}
+
+void boundary_must_be_the_cloud_border(void**) {
+  // The unit square's sides on a plane cloud that ends there: seeded (on the plane). The
+  // same sides inside a cloud twice as wide: about half of the points near each side lie
+  // beyond it, which a map fixed on the boundary cannot place: refused.
+  Cap border = square_cloud(0.0, 1.0), across = square_cloud(-0.5, 1.5);
+  assert_true(seed_from_meshless_map(border.root, border.points, 5));
+  assert_true(mean_distance(border.root.surface, border.points) < 1e-3);  // jittered up to 0.003 beyond the sides
+  const Vec3 middle = across.root.surface.eval(0.5, 0.5);
+  assert_false(seed_from_meshless_map(across.root, across.points, 5));
+  assert_true(across.root.surface.eval(0.5, 0.5) == middle);
+}
+
 void coincident_points_give_no_seed(void**) {
   Cap c = cap(270.0);
   const Vec3 one = c.points[100];
@@ -124,6 +155,7 @@ int main() {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(seed_wraps_a_cap_closing_over_a_small_rim),
       cmocka_unit_test(detached_clump_and_duplicates_are_left_out),
+      cmocka_unit_test(boundary_must_be_the_cloud_border),
       cmocka_unit_test(coincident_points_give_no_seed),
       cmocka_unit_test(too_few_points_leave_the_patch_untouched),
   };
