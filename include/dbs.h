@@ -554,7 +554,7 @@ DBS_API int dbs_result_evaluate(const dbs_result *result, double u, double v, do
 #define DBS_STAT_LEVELS 5        /* number of quadtree levels (1 = root only), a count */
 #define DBS_STAT_PATCHES 6       /* number of patches in the quadtree, a count */
 #define DBS_STAT_LEAVES 7        /* number of leaf patches, a count */
-#define DBS_STAT_ITERATIONS 8    /* grid evolutions over all patches, a count */
+#define DBS_STAT_ITERATIONS 8    /* grid evolutions over all patches (since 0.4 with each patch's warm-up grid and a root's restarts), a count */
 #define DBS_STAT_SECONDS 9       /* wall-clock time of dbs_parameterize, seconds */
 #define DBS_STAT_LENGTH_SCALE 10 /* the cloud's length scale h (mean nearest-neighbour spacing), cloud units */
 #define DBS_STAT_SECONDS_INDEX 11        /* wall-clock time spent indexing the cloud, seconds */
