@@ -30,6 +30,7 @@ CloudBody cloud_body(const std::vector<Vec3>& points, const Boundary& boundary) 
   const double reach = kFarOutside * extent;
   CloudBody out;
   out.far.assign(n, 0);
+  out.body.reserve(n);  // every point but the rare far ones: no doubling of a list of them all
   Box3 box;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 q = frame.local(points[i]);
