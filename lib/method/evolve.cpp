@@ -33,7 +33,6 @@ constexpr double kCoarseRestartFactor = 10.0;
 /// 0.03-0.18; where both wrap the cloud: 0.70-0.99).
 constexpr double kCoarseRestartGain = 0.5;
 
-
 /// Grid projections of `patch` at one grid size: where the pleat guard held nodes back, the
 /// surface moves on from where it got to, along its new normals, up to kMaxDampedSteps
 /// times: an overhang or a steep wall is reached in a few damped steps instead of being
