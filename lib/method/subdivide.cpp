@@ -93,13 +93,14 @@ SplitCurve project_middle_curve(const BaseSurface& surface, ParamAt at, const Ve
 
 /// The patch centre S(1/2,1/2) projected onto the cloud along the surface normal (repeated
 /// like the curves' projection); it stays where it is once the ray meets no cloud weight (a
-/// hole keeps the parent's shape).
+/// hole keeps the parent's shape) or a pass would take it off the cloud (departs()).
 Vec3 projected_centre(const BaseSurface& surface, const DirectedProjector& projector) {
   Vec3 centre = surface.eval(0.5, 0.5);
   const Vec3 normal = surface.normal(0.5, 0.5);
   for (int pass = 0; pass < kMaxProjectionPasses; ++pass) {
     double t = 0.0;
     if (!projector.project(centre, normal, t)) break;
+    if (departs(projector, centre, centre + t * normal)) break;  // a ray grazing the sheet (departure_guard.hpp)
     centre += t * normal;
     if (std::abs(t) * normal.norm() <= kSettledOffset * projector.length_scale()) break;
   }

@@ -38,6 +38,12 @@ std::vector<double> start_distances(const CloudIndex& index, const CurveProjecti
 
 }  // namespace
 
+bool departs(const DirectedProjector& projector, const Vec3& from, const Vec3& to) {
+  const CloudIndex& index = projector.index();
+  if (index.size() == 0) return false;
+  return distance_to_cloud(index, to) > distance_to_cloud(index, from) + kDepartureTolerance * projector.length_scale();
+}
+
 std::size_t hold_departing_nodes(const DirectedProjector& projector, CurveProjectionInput& input, const std::vector<double>& offsets, double tolerance) {
   const std::size_t k = input.nodes.size();
   if (offsets.size() != k || input.directions.size() != k)

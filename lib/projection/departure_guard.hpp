@@ -12,7 +12,7 @@
 // and the curve is solved again (its neighbours then follow the smoothing terms around it).
 // A node approaching the cloud, or moving across a hole (its distance to the cloud changes
 // little), is never held. The guard is applied to the seams of a subdivision, which are final
-// boundaries of the children. (On the grid sections it was tried and rejected: a grid is
+// boundaries of the children, and to the patch centre they share (departs()). (On the grid sections it was tried and rejected: a grid is
 // projected again at every size and the pleat guard judges its cells, and holding nodes there
 // kept the 270-degree cap from wrapping: 330 reference folds against 4.)
 #pragma once
@@ -26,6 +26,10 @@ namespace dbs {
 
 /// How much farther from its nearest cloud point a node may end than it started, in h.
 constexpr double kDepartureTolerance = 1.0;
+
+/// Whether moving a point from `from` to `to` takes it more than kDepartureTolerance h farther
+/// from its nearest point of projector.index() (false for an empty index).
+bool departs(const DirectedProjector& projector, const Vec3& from, const Vec3& to);
 
 /// Appends to input.fixed the free interior nodes whose move by offsets[k] along
 /// input.directions[k] takes them more than `tolerance` (cloud units) farther from their

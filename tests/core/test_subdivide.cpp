@@ -226,6 +226,27 @@ void centre_over_a_hole_keeps_the_parent_shape(void**) {
   assert_true(worst <= 0.05 * h);
 }
 
+void centre_is_not_pulled_off_the_cloud(void**) {
+  // Two dense clumps 0.6 above the flat cloud, half a spacing either side of the normal ray
+  // of the patch centre: the ray's weighted mean lies between the sheet and the clumps, in
+  // empty space, and a centre moved there would leave the cloud (taking the four children's
+  // shared corner with it). It stays on the sheet.
+  std::vector<Vec3> pts = jittered_cloud(2.0, 100, 50, [](double, double) { return 0.0; });
+  const double h0 = cloud_spacing(CloudIndex(pts));
+  for (int k = 0; k < 400; ++k)
+    for (double side : {-0.5, 0.5}) pts.emplace_back(1.0 + side * h0, 0.5 + 1e-5 * (k % 11), 0.6 + 1e-5 * (k % 13));
+  CloudIndex index(pts);
+  const double h = cloud_spacing(index);
+  DirectedProjector projector(index, h);
+  double t = 0.0;
+  assert_true(projector.project(Vec3(1.0, 0.5, 0.0), Vec3(0.0, 0.0, 1.0), t));
+  const std::array<Patch, 4> c = subdivide_patch(flat_parent(), projector, 0.5, 5);
+  const Vec3 centre = c[0].surface.boundary().corner(1, 1);
+  std::printf("clumps by the centre's ray: one projection would lift it %.2f h; the centre is %.3f h off the sheet\n", t / h, std::abs(centre.z()) / h);
+  assert_true(t > 3.0 * h);  // the failure the guard is for
+  assert_true(std::abs(centre.z()) < 0.5 * h);
+}
+
 void grid_below_two_is_rejected(void**) {
   const std::vector<Vec3> pts = jittered_cloud(2.0, 20, 10, [](double, double) { return 0.0; });
   CloudIndex index(pts);
@@ -246,6 +267,7 @@ int main() {
       cmocka_unit_test(flat_patch_splits_on_its_midlines),
       cmocka_unit_test(middle_curves_follow_a_curved_cloud),
       cmocka_unit_test(centre_over_a_hole_keeps_the_parent_shape),
+      cmocka_unit_test(centre_is_not_pulled_off_the_cloud),
       cmocka_unit_test(grid_below_two_is_rejected),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
