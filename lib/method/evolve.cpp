@@ -188,7 +188,13 @@ void evolve_patch_with_restart(Patch& patch, const std::vector<Vec3>& points, co
   if (!far_above()) return;
   Patch seeded = start;
   seeded.subcloud.swap(patch.subcloud);
-  const bool seeds = seed_from_meshless_map(seeded, points, settings.initial_grid);
+  bool seeds = false;
+  try {
+    seeds = seed_from_meshless_map(seeded, points, settings.initial_grid, settings.meter);
+  } catch (...) {
+    seeded.subcloud.swap(patch.subcloud);  // a cancel: the patch keeps its subcloud
+    throw;
+  }
   seeded.subcloud.swap(patch.subcloud);
   if (!seeds) return;
   EvolveSettings from_seed = settings;

@@ -49,7 +49,7 @@ struct Neighbours {
   std::vector<std::vector<double>> distance;
 };
 
-Neighbours nearest_others(const CloudIndex& index, const std::vector<Vec3>& sample) {
+Neighbours nearest_others(const CloudIndex& index, const std::vector<Vec3>& sample, WorkMeter* meter) {
   Neighbours out;
   out.index.resize(sample.size());
   out.distance.resize(sample.size());
@@ -62,6 +62,7 @@ Neighbours nearest_others(const CloudIndex& index, const std::vector<Vec3>& samp
       out.index[i].push_back(near[k]);
       out.distance[i].push_back(std::sqrt(d2[k]));
     }
+    count_work(meter);
   }
   return out;
 }
@@ -117,7 +118,7 @@ std::vector<char> reaching_fixed(const Neighbours& near, const std::vector<char>
 
 }  // namespace
 
-bool seed_from_meshless_map(Patch& patch, const std::vector<Vec3>& points, int grid) {
+bool seed_from_meshless_map(Patch& patch, const std::vector<Vec3>& points, int grid, WorkMeter* meter) {
   const std::size_t n = patch.subcloud.size();
   if (n < 4 * kSeedNeighbours || grid < 3 || grid > kMaxSeedGrid) return false;
   // About kSeedPoints of them, chosen by a hash of their position in the subcloud: a stride
@@ -130,7 +131,7 @@ bool seed_from_meshless_map(Patch& patch, const std::vector<Vec3>& points, int g
   if (sample.size() < 4 * kSeedNeighbours) return false;
   const std::size_t m = sample.size();
   const CloudIndex index(sample);
-  const Neighbours near = nearest_others(index, sample);
+  const Neighbours near = nearest_others(index, sample, meter);
   // The sample's spacing: the mean distance to the nearest distinct point.
   double spacing = 0.0;
   std::size_t spaced = 0;
@@ -161,6 +162,7 @@ bool seed_from_meshless_map(Patch& patch, const std::vector<Vec3>& points, int g
       const Vec3 q = line.at(s);
       const std::size_t nearest = index.nearest(q);
       ++positions;
+      count_work(meter);
       if (!((sample[nearest] - q).norm() <= kSeedBoundarySpacings * spacing)) continue;
       fixed[nearest] = 1;
       ++on_cloud;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "patch.hpp"
+#include "work_meter.hpp"
 
 namespace dbs {
 
@@ -36,8 +37,9 @@ constexpr int kMaxSeedGrid = 23;               ///< the largest grid the fit tak
 /// all coincide, the boundary does not lie on the cloud (fewer than kSeedBoundaryShare of
 /// its positions within reach) or is not its border (a median share above kSeedBeyondShare
 /// of the points near its positions lie beyond it: a cloud larger than its boundary), the
-/// sparse solve fails or the fit fails. Throws nothing but
-/// std::bad_alloc.
-bool seed_from_meshless_map(Patch& patch, const std::vector<Vec3>& points, int grid);
+/// sparse solve fails or the fit fails. `meter` (may be null) counts a unit per sample point
+/// whose neighbours are looked up and per boundary position; what it throws (Error(Cancelled))
+/// is the only exception but std::bad_alloc, the patch then untouched too.
+bool seed_from_meshless_map(Patch& patch, const std::vector<Vec3>& points, int grid, WorkMeter* meter = nullptr);
 
 }  // namespace dbs

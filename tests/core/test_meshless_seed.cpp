@@ -12,6 +12,7 @@
 #include "meshless_seed.hpp"
 #include "patch.hpp"
 #include "surface_projection.hpp"
+#include "work_meter.hpp"
 #include "core_test_support.hpp"  // last of the dbs headers
 
 using namespace dbs;
@@ -119,6 +120,22 @@ void boundary_must_be_the_cloud_border(void**) {
   assert_true(across.root.surface.eval(0.5, 0.5) == middle);
 }
 
+void seed_reports_its_work_and_can_be_cancelled(void**) {
+  // Every sample point and boundary position counts a unit; a report that cancels (the
+  // host's progress callback returned true) stops the seed, the patch untouched.
+  Cap c = cap(330.0);
+  WorkMeter counting(1u << 30);
+  assert_true(seed_from_meshless_map(c.root, c.points, 5, &counting));
+  assert_true(counting.done() >= c.points.size());
+  Cap d = cap(330.0);
+  const Vec3 middle = d.root.surface.eval(0.5, 0.5);
+  WorkMeter cancelling(256);
+  cancelling.set_report([] { throw Error(ErrorCode::Cancelled, "cancelled by the test"); });
+  // Reports are made inside the meter's loop (as the driver's evolution runs the root).
+  assert_true(core_test::throws(ErrorCode::Cancelled, [&] { cancelling.run(1, 1, [&](std::size_t) { seed_from_meshless_map(d.root, d.points, 5, &cancelling); }); }));
+  assert_true(d.root.surface.eval(0.5, 0.5) == middle);
+}
+
 void coincident_points_give_no_seed(void**) {
   Cap c = cap(270.0);
   const Vec3 one = c.points[100];
@@ -156,6 +173,7 @@ int main() {
       cmocka_unit_test(seed_wraps_a_cap_closing_over_a_small_rim),
       cmocka_unit_test(detached_clump_and_duplicates_are_left_out),
       cmocka_unit_test(boundary_must_be_the_cloud_border),
+      cmocka_unit_test(seed_reports_its_work_and_can_be_cancelled),
       cmocka_unit_test(coincident_points_give_no_seed),
       cmocka_unit_test(too_few_points_leave_the_patch_untouched),
   };
