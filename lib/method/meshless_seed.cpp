@@ -92,6 +92,53 @@ double share_beyond(const CloudIndex& index, const std::vector<Vec3>& sample, co
   return static_cast<double>(std::min(plus, minus)) / static_cast<double>(near.size());
 }
 
+/// The sample's spacing: the mean distance to the nearest distinct point (0 when every point
+/// has only coincident neighbours).
+double sample_spacing(const Neighbours& near) {
+  double spacing = 0.0;
+  std::size_t spaced = 0;
+  for (const std::vector<double>& d : near.distance) {
+    const auto distinct = std::find_if(d.begin(), d.end(), [](double x) { return x > 0.0; });
+    if (distinct == d.end()) continue;
+    spacing += *distinct;
+    ++spaced;
+  }
+  return spaced == 0 ? 0.0 : spacing / static_cast<double>(spaced);
+}
+
+/// The boundary taken into the cloud: each side walked at the sample's spacing, the sample
+/// point nearest each position fixed (`fixed`, one flag per sample point) where it lies within
+/// kSeedBoundarySpacings. False when the map cannot use the boundary: it is not on the cloud
+/// (fewer than kSeedBoundaryShare of the positions within reach; its fixed points must be
+/// boundary points) or not the cloud's border (a median share above kSeedBeyondShare of the
+/// points near its positions beyond it: points beyond a boundary crossing the cloud have no
+/// (u,v) to take).
+bool fix_boundary_points(const Boundary& boundary, const CloudIndex& index, const std::vector<Vec3>& sample, double spacing, std::vector<char>& fixed, WorkMeter* meter) {
+  const std::size_t m = sample.size();
+  fixed.assign(m, 0);
+  std::size_t positions = 0, on_cloud = 0;
+  std::vector<double> beyond;
+  for (int side = 0; side < 4; ++side) {
+    const Polyline& line = boundary.side(static_cast<Side>(side));
+    const std::size_t steps = static_cast<std::size_t>(std::clamp(std::ceil(line.length() / spacing), 1.0, static_cast<double>(m)));
+    for (std::size_t k = 0; k <= steps; ++k) {
+      const double s = static_cast<double>(k) / static_cast<double>(steps);
+      const Vec3 q = line.at(s);
+      const std::size_t nearest = index.nearest(q);
+      ++positions;
+      count_work(meter);
+      if (!((sample[nearest] - q).norm() <= kSeedBoundarySpacings * spacing)) continue;
+      fixed[nearest] = 1;
+      ++on_cloud;
+      beyond.push_back(share_beyond(index, sample, q, line.tangent(s)));
+    }
+  }
+  if (!(static_cast<double>(on_cloud) >= kSeedBoundaryShare * static_cast<double>(positions))) return false;
+  const auto middle = beyond.begin() + static_cast<std::ptrdiff_t>(beyond.size() / 2);
+  std::nth_element(beyond.begin(), middle, beyond.end());
+  return *middle <= kSeedBeyondShare;
+}
+
 /// The points whose (u,v) the map determines: the fixed ones and, by a path of neighbours,
 /// those that reach one (a clump of points that are only each other's neighbours would
 /// leave its block of the system without a fixed value).
@@ -132,47 +179,11 @@ bool seed_from_meshless_map(Patch& patch, const std::vector<Vec3>& points, int g
   const std::size_t m = sample.size();
   const CloudIndex index(sample);
   const Neighbours near = nearest_others(index, sample, meter);
-  // The sample's spacing: the mean distance to the nearest distinct point.
-  double spacing = 0.0;
-  std::size_t spaced = 0;
-  for (const std::vector<double>& d : near.distance) {
-    const auto distinct = std::find_if(d.begin(), d.end(), [](double x) { return x > 0.0; });
-    if (distinct == d.end()) continue;
-    spacing += *distinct;
-    ++spaced;
-  }
-  if (spaced == 0) return false;  // every point has only coincident neighbours
-  spacing /= static_cast<double>(spaced);
-
-  // The boundary taken into the cloud: each side walked at the sample's spacing, the sample
-  // point nearest each position fixed at its boundary parameters where it lies within
-  // kSeedBoundarySpacings. The map needs the boundary on the cloud (its fixed points are
-  // boundary points): with fewer than kSeedBoundaryShare of the positions on it, no seed.
-  // The map also needs the boundary to be the cloud's border: where it crosses the cloud
-  // (a cloud larger than its boundary), points beyond it have no (u,v) to take.
+  const double spacing = sample_spacing(near);
+  if (!(spacing > 0.0)) return false;  // every point has only coincident neighbours
   const Boundary& boundary = patch.surface.boundary();
-  std::vector<char> fixed(m, 0);
-  std::size_t positions = 0, on_cloud = 0;
-  std::vector<double> beyond;
-  for (int side = 0; side < 4; ++side) {
-    const Polyline& line = boundary.side(static_cast<Side>(side));
-    const std::size_t steps = static_cast<std::size_t>(std::clamp(std::ceil(line.length() / spacing), 1.0, static_cast<double>(m)));
-    for (std::size_t k = 0; k <= steps; ++k) {
-      const double s = static_cast<double>(k) / static_cast<double>(steps);
-      const Vec3 q = line.at(s);
-      const std::size_t nearest = index.nearest(q);
-      ++positions;
-      count_work(meter);
-      if (!((sample[nearest] - q).norm() <= kSeedBoundarySpacings * spacing)) continue;
-      fixed[nearest] = 1;
-      ++on_cloud;
-      beyond.push_back(share_beyond(index, sample, q, line.tangent(s)));
-    }
-  }
-  if (!(static_cast<double>(on_cloud) >= kSeedBoundaryShare * static_cast<double>(positions))) return false;
-  const auto middle = beyond.begin() + static_cast<std::ptrdiff_t>(beyond.size() / 2);
-  std::nth_element(beyond.begin(), middle, beyond.end());
-  if (!(*middle <= kSeedBeyondShare)) return false;
+  std::vector<char> fixed;
+  if (!fix_boundary_points(boundary, index, sample, spacing, fixed, meter)) return false;
 
   // One row per point the map determines (kept): fixed, or the inverse-distance mean of its
   // kept neighbours, a coincident one weighing as one at a hundredth of the spacing.
