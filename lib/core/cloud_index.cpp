@@ -13,6 +13,8 @@
 
 #include "error.hpp"
 #include "parallel.hpp"
+#include "spatial_chunks.hpp"
+#include "work_meter.hpp"
 
 // near_ray() walks nanoflann's tree itself: its public members (the permutation vAcc, the root
 // node and the root's bounding box) and the nodes' node_type.lr / node_type.sub unions and
@@ -34,22 +36,22 @@ namespace dbs {
 
 namespace {
 
-/// The nanoflann dataset: the indexed points, all of them or points[subset[k]]. While the
-/// tree is built, `columns` holds the indexed points' coordinates one axis after the other
-/// (x of every point, then y, then z): the build reads one axis at a time in the order of a
-/// permutation, and a dense column of 8 bytes a point stays in cache far better than the
-/// 24-byte points, which cuts most of its time. The same numbers: the same tree.
+/// The nanoflann dataset of one chunk: the points points[slots[k]], k < count. While the
+/// tree is built, `columns` holds their coordinates one axis after the other (x of every
+/// point, then y, then z): the build reads one axis at a time in the order of a permutation,
+/// and a dense column of 8 bytes a point stays in cache far better than the 24-byte points,
+/// which cuts most of its time. The same numbers: the same tree.
 struct Dataset {
   const std::vector<Vec3>* points;
-  const std::vector<std::size_t>* subset;  // nullptr: every point
-  const double* columns = nullptr;          // during the build only
+  const std::uint32_t* slots;
   std::size_t count = 0;
+  const double* columns = nullptr;  // during the build only
 
-  std::size_t map(std::size_t k) const { return subset ? (*subset)[k] : k; }
-  std::size_t kdtree_get_point_count() const { return subset ? subset->size() : points->size(); }
+  std::size_t map(std::size_t k) const { return slots[k]; }
+  std::size_t kdtree_get_point_count() const { return count; }
   double kdtree_get_pt(std::uint32_t k, std::size_t dim) const {
     if (columns) return columns[dim * count + k];
-    return (*points)[map(k)][static_cast<Eigen::Index>(dim)];
+    return (*points)[slots[k]][static_cast<Eigen::Index>(dim)];
   }
   template <class Box>
   bool kdtree_get_bbox(Box&) const {
@@ -115,44 +117,86 @@ struct RayBoxBound {
   }
 };
 
+/// A nanoflann KNN result set shared by the trees of a forest: each tree reports its own
+/// point numbers, which become positions in the forest's slots (the chunk's first slot
+/// added), so one set keeps the k nearest over every tree and prunes with the best so far.
+struct ForestKnn {
+  nanoflann::KNNResultSet<double, std::uint32_t>& found;
+  std::uint32_t first_slot = 0;
+
+  bool addPoint(double d2, std::uint32_t k) { return found.addPoint(d2, first_slot + k); }
+  double worstDist() const { return found.worstDist(); }
+  bool full() const { return found.full(); }
+};
+
+/// The squared distance of q to a box (0 inside).
+double box_distance2(const Vec3& q, const Vec3& lo, const Vec3& hi) { return (lo - q).cwiseMax(q - hi).cwiseMax(0.0).squaredNorm(); }
+
 }  // namespace
 
 struct CloudIndex::Impl {
-  const std::vector<Vec3>& points;
-  std::vector<std::size_t> subset;
-  Dataset dataset;
-  std::vector<double> columns;  // Dataset::columns, freed once the tree is built
-  Tree tree;
+  /// One tree over a contiguous range of the slots.
+  struct Chunk {
+    Dataset dataset;
+    std::unique_ptr<Tree> tree;
+    std::uint32_t first_slot = 0;
+    Vec3 lo, hi;  // the tree's root box
 
-  Impl(const std::vector<Vec3>& pts, std::vector<std::size_t> sub, bool whole_cloud)
-      : points(pts),
-        subset(std::move(sub)),
-        dataset{&points, whole_cloud ? nullptr : &subset},
-        columns(by_axis(dataset)),
-        tree(3, dataset, nanoflann::KDTreeSingleIndexAdaptorParams(kLeafSize)) {
-    dataset.columns = nullptr;
-    std::vector<double>().swap(columns);
+    const Tree::Node* root() const { return tree->DBS_NANOFLANN_MEMBER(root_node); }
+  };
+
+  const std::vector<Vec3>& points;
+  std::vector<std::uint32_t> subset;  // point_index order; empty for the whole cloud
+  std::vector<std::uint32_t> slots;   // the indexed points, chunk after chunk
+  std::vector<std::unique_ptr<Chunk>> chunks;
+
+  Impl(const std::vector<Vec3>& pts, std::vector<std::uint32_t> sub, bool whole_cloud, const IndexBuild& build) : points(pts), subset(std::move(sub)) {
+    if (whole_cloud) {
+      slots.resize(points.size());
+      for (std::size_t k = 0; k < slots.size(); ++k) slots[k] = static_cast<std::uint32_t>(k);
+    } else {
+      slots = subset;
+    }
+    const std::vector<ChunkRange> ranges = cut_into_chunks(points, slots, build.chunk_points, build.threads, build.meter);
+    chunks.resize(ranges.size());
+    metered_for(build.meter, ranges.size(), build.threads, [&](std::size_t c) {
+      chunks[c] = make_chunk(ranges[c]);
+      count_work(build.meter, index_units(ranges[c].begin, ranges[c].end));
+    });
   }
 
-  /// The columns of `data` for the build (and points them at the copy).
-  static std::vector<double> by_axis(Dataset& data) {
-    const std::size_t n = data.kdtree_get_point_count();
+  std::unique_ptr<Chunk> make_chunk(const ChunkRange& range) const {
+    auto chunk = std::make_unique<Chunk>();
+    chunk->first_slot = static_cast<std::uint32_t>(range.begin);
+    chunk->dataset = Dataset{&points, slots.data() + range.begin, range.end - range.begin};
+    const std::vector<double> columns = by_axis(chunk->dataset);
+    chunk->dataset.columns = columns.data();
+    chunk->tree = std::make_unique<Tree>(3, chunk->dataset, nanoflann::KDTreeSingleIndexAdaptorParams(kLeafSize));
+    chunk->dataset.columns = nullptr;
+    const auto& box = chunk->tree->DBS_NANOFLANN_MEMBER(root_bbox);
+    chunk->lo = Vec3(box[0].low, box[1].low, box[2].low);
+    chunk->hi = Vec3(box[0].high, box[1].high, box[2].high);
+    return chunk;
+  }
+
+  /// The columns of `data` for its build.
+  static std::vector<double> by_axis(const Dataset& data) {
+    const std::size_t n = data.count;
     std::vector<double> out(3 * n);
     for (std::size_t k = 0; k < n; ++k) {
       const Vec3& p = (*data.points)[data.map(k)];
       for (int axis = 0; axis < 3; ++axis) out[static_cast<std::size_t>(axis) * n + k] = p[axis];
     }
-    data.columns = out.data();
-    data.count = n;
     return out;
   }
 
-  void collect_near_ray(const Tree::Node* node, Vec3 lo, Vec3 hi, const RayBoxBound& query, std::vector<std::size_t>& out) const {
+  void collect_near_ray(const Chunk& chunk, const Tree::Node* node, Vec3 lo, Vec3 hi, const RayBoxBound& query, std::vector<std::size_t>& out) const {
     if (!query.may_hold(lo, hi)) return;
     if (node->child1 == nullptr && node->child2 == nullptr) {
       const double bound2 = query.bound * query.bound;
+      const auto& local = chunk.tree->DBS_NANOFLANN_MEMBER(vAcc);
       for (std::size_t i = node->node_type.lr.left; i < node->node_type.lr.right; ++i) {
-        const std::size_t index = dataset.map(tree.DBS_NANOFLANN_MEMBER(vAcc)[i]);
+        const std::size_t index = chunk.dataset.map(local[i]);
         const Vec3 d = points[index] - query.p;
         if (d.squaredNorm() * d.cross(query.u).squaredNorm() <= bound2) out.push_back(index);
       }
@@ -162,35 +206,60 @@ struct CloudIndex::Impl {
     Vec3 hi_low = hi, lo_high = lo;
     hi_low[axis] = node->node_type.sub.divlow;
     lo_high[axis] = node->node_type.sub.divhigh;
-    collect_near_ray(node->child1, lo, hi_low, query, out);
-    collect_near_ray(node->child2, lo_high, hi, query, out);
+    collect_near_ray(chunk, node->child1, lo, hi_low, query, out);
+    collect_near_ray(chunk, node->child2, lo_high, hi, query, out);
+  }
+
+  /// The k nearest over every chunk into `found`: the chunks nearest to q first, a chunk
+  /// whose box is farther than the k-th point found so far skipped.
+  void knn(const Vec3& q, nanoflann::KNNResultSet<double, std::uint32_t>& found) const {
+    thread_local std::vector<std::pair<double, std::size_t>> order;
+    order.clear();
+    for (std::size_t c = 0; c < chunks.size(); ++c) order.emplace_back(box_distance2(q, chunks[c]->lo, chunks[c]->hi), c);
+    std::sort(order.begin(), order.end());
+    for (const auto& [d2, c] : order) {
+      if (found.full() && d2 > found.worstDist()) break;
+      ForestKnn shared{found, chunks[c]->first_slot};
+      chunks[c]->tree->findNeighbors(shared, q.data(), exact_search(true));
+    }
   }
 };
 
 namespace {
 
-std::vector<std::size_t> checked_subset(const std::vector<Vec3>& points, std::vector<std::size_t> subset) {
+std::vector<std::uint32_t> checked_subset(const std::vector<Vec3>& points, const std::vector<std::size_t>& subset) {
   if (points.size() > std::numeric_limits<std::uint32_t>::max()) fail(ErrorCode::OutOfRange, "CloudIndex: more than 2^32-1 points");
-  for (std::size_t k = 0; k < subset.size(); ++k)
+  std::vector<std::uint32_t> checked(subset.size());
+  for (std::size_t k = 0; k < subset.size(); ++k) {
     if (subset[k] >= points.size())
       fail(ErrorCode::OutOfRange, "CloudIndex: subset entry " + std::to_string(k) + " = " + std::to_string(subset[k]) + " is not below the point count " + std::to_string(points.size()));
-  return subset;
+    checked[k] = static_cast<std::uint32_t>(subset[k]);
+  }
+  return checked;
 }
 
 }  // namespace
 
-CloudIndex::CloudIndex(const std::vector<Vec3>& points) : impl_(std::make_unique<Impl>(points, checked_subset(points, {}), true)) {}
+std::uint64_t index_build_work(std::size_t n, std::size_t chunk_points) {
+  // Every halving pass reads all n points (all but a few when the halves differ by one point
+  // and only the larger is halved again), and so does the build of the trees.
+  return index_units(0, n) * static_cast<std::uint64_t>(halving_passes(n, chunk_points) + 1);
+}
 
-CloudIndex::CloudIndex(const std::vector<Vec3>& points, std::vector<std::size_t> subset)
-    : impl_(std::make_unique<Impl>(points, checked_subset(points, std::move(subset)), false)) {}
+CloudIndex::CloudIndex(const std::vector<Vec3>& points, const IndexBuild& build) : impl_(std::make_unique<Impl>(points, checked_subset(points, {}), true, build)) {}
+
+CloudIndex::CloudIndex(const std::vector<Vec3>& points, const std::vector<std::size_t>& subset, const IndexBuild& build)
+    : impl_(std::make_unique<Impl>(points, checked_subset(points, subset), false, build)) {}
 
 CloudIndex::~CloudIndex() = default;
 
 const std::vector<Vec3>& CloudIndex::points() const { return impl_->points; }
 
-std::size_t CloudIndex::size() const { return impl_->dataset.kdtree_get_point_count(); }
+std::size_t CloudIndex::size() const { return impl_->slots.size(); }
 
-std::size_t CloudIndex::point_index(std::size_t k) const { return impl_->dataset.map(k); }
+std::size_t CloudIndex::chunks() const { return impl_->chunks.size(); }
+
+std::size_t CloudIndex::point_index(std::size_t k) const { return impl_->subset.empty() ? k : impl_->subset[k]; }
 
 std::size_t CloudIndex::nearest(const Vec3& q) const {
   if (size() == 0) fail(ErrorCode::Empty, "CloudIndex::nearest: the index holds no points");
@@ -198,8 +267,8 @@ std::size_t CloudIndex::nearest(const Vec3& q) const {
   double d2 = 0.0;
   nanoflann::KNNResultSet<double, std::uint32_t> result(1);
   result.init(&k, &d2);
-  impl_->tree.findNeighbors(result, q.data(), exact_search(true));
-  return impl_->dataset.map(k);
+  impl_->knn(q, result);
+  return impl_->slots[k];
 }
 
 void CloudIndex::knn(const Vec3& q, std::size_t k, std::vector<std::size_t>& out_idx, std::vector<double>& out_d2) const {
@@ -210,19 +279,25 @@ void CloudIndex::knn(const Vec3& q, std::size_t k, std::vector<std::size_t>& out
   thread_local std::vector<std::uint32_t> found;  // scratch: no allocation per query
   found.resize(k);
   out_d2.resize(k);
-  const std::size_t count = impl_->tree.knnSearch(q.data(), k, found.data(), out_d2.data());
+  nanoflann::KNNResultSet<double, std::uint32_t> result(k);
+  result.init(found.data(), out_d2.data());
+  impl_->knn(q, result);
+  const std::size_t count = result.size();
   out_d2.resize(count);
   out_idx.resize(count);
-  for (std::size_t i = 0; i < count; ++i) out_idx[i] = impl_->dataset.map(found[i]);
+  for (std::size_t i = 0; i < count; ++i) out_idx[i] = impl_->slots[found[i]];
 }
 
 void CloudIndex::radius(const Vec3& q, double r, std::vector<std::size_t>& out_idx) const {
   out_idx.clear();
   if (size() == 0 || !(r >= 0.0)) return;
-  std::vector<RadiusMatch> found;
-  impl_->tree.radiusSearch(q.data(), r * r, found, exact_search(false));
-  out_idx.reserve(found.size());
-  for (const auto& f : found) out_idx.push_back(impl_->dataset.map(f.first));
+  thread_local std::vector<RadiusMatch> found;
+  for (const auto& chunk : impl_->chunks) {
+    if (box_distance2(q, chunk->lo, chunk->hi) > r * r) continue;
+    found.clear();
+    chunk->tree->radiusSearch(q.data(), r * r, found, exact_search(false));
+    for (const auto& f : found) out_idx.push_back(chunk->dataset.map(f.first));
+  }
 }
 
 void CloudIndex::near_ray(const Vec3& p, const Vec3& n, double bound, std::vector<std::size_t>& out_idx) const {
@@ -230,9 +305,7 @@ void CloudIndex::near_ray(const Vec3& p, const Vec3& n, double bound, std::vecto
   const double length = n.norm();
   if (size() == 0 || !(length > 0.0)) return;
   const RayBoxBound query{p, n / length, bound};
-  const Tree& tree = impl_->tree;
-  const auto& box = tree.DBS_NANOFLANN_MEMBER(root_bbox);
-  impl_->collect_near_ray(tree.DBS_NANOFLANN_MEMBER(root_node), Vec3(box[0].low, box[1].low, box[2].low), Vec3(box[0].high, box[1].high, box[2].high), query, out_idx);
+  for (const auto& chunk : impl_->chunks) impl_->collect_near_ray(*chunk, chunk->root(), chunk->lo, chunk->hi, query, out_idx);
 }
 
 double cloud_spacing(const CloudIndex& index, std::size_t max_samples, int threads) {

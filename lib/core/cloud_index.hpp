@@ -1,7 +1,11 @@
 // Nearest-neighbour queries over a point cloud or a subset of it. nanoflann stays
-// behind the pimpl: only cloud_index.cpp includes it.
+// behind the pimpl: only cloud_index.cpp includes it. A large cloud is indexed as a forest:
+// one nanoflann tree per spatial chunk (spatial_chunks.hpp), built in parallel with progress
+// reported and a cancel taking effect after every chunk; queries visit the chunks whose boxes
+// can hold an answer and give the same points as one tree would.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -9,19 +13,36 @@
 
 namespace dbs {
 
+class WorkMeter;
+
+/// How an index is built: on how many threads, counting its work (one unit per
+/// kPointsPerIndexUnit points of a pass) on an optional meter, in chunks of at most
+/// chunk_points points (smaller than the default in tests only: the answers are the same).
+struct IndexBuild {
+  static constexpr std::size_t kDefaultChunkPoints = std::size_t{1} << 16;
+  int threads = 1;
+  WorkMeter* meter = nullptr;
+  std::size_t chunk_points = kDefaultChunkPoints;
+};
+
+/// The units of work IndexBuild counts for an index of n points: exact when every halving
+/// pass halves every range, an upper bound by a few units a pass otherwise.
+std::uint64_t index_build_work(std::size_t n, std::size_t chunk_points = IndexBuild::kDefaultChunkPoints);
+
 class CloudIndex {
  public:
   /// Indexes all of `points` (which must outlive the index).
-  explicit CloudIndex(const std::vector<Vec3>& points);
+  explicit CloudIndex(const std::vector<Vec3>& points, const IndexBuild& build = IndexBuild());
   /// Indexes only points[subset[k]]; queries still answer with indices into `points`.
-  CloudIndex(const std::vector<Vec3>& points, std::vector<std::size_t> subset);
+  CloudIndex(const std::vector<Vec3>& points, const std::vector<std::size_t>& subset, const IndexBuild& build = IndexBuild());
   ~CloudIndex();
   CloudIndex(const CloudIndex&) = delete;
   CloudIndex& operator=(const CloudIndex&) = delete;
 
   const std::vector<Vec3>& points() const;
-  /// Number of indexed points.
+  /// Number of indexed points and of the chunks (trees) holding them.
   std::size_t size() const;
+  std::size_t chunks() const;
   /// Index into points() of the k-th indexed point (k < size()): k itself for a whole-cloud
   /// index, subset[k] for a subset index.
   std::size_t point_index(std::size_t k) const;

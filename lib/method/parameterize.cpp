@@ -92,10 +92,12 @@ class Driver {
 
   Result run() {
     const auto start = Clock::now();
-    begin_stage("index", 0.0, kIndexEnd, 20000);  // the noise estimate's fits, about
-    // The root's subcloud is the whole cloud in input order, so this index (the same tree as
+    // The tree's build and the noise estimate's fits (about 20,000).
+    begin_stage("index", 0.0, kIndexEnd, index_build_work(body_.body.size()) + 20000);
+    // The root's subcloud is the whole cloud in input order, so this index (the same trees as
     // one over that subcloud) also serves the root's evolution and subdivision.
-    cloud_index_ = result_.far_points == 0 ? std::make_unique<CloudIndex>(points_) : std::make_unique<CloudIndex>(points_, body_.body);
+    const IndexBuild build{threads_, &meter_};
+    cloud_index_ = result_.far_points == 0 ? std::make_unique<CloudIndex>(points_, build) : std::make_unique<CloudIndex>(points_, body_.body, build);
     const NoiseEstimate noise = estimate_noise(*cloud_index_, threads_, &meter_);
     result_.length_scale = noise.spacing;
     result_.noise = noise.sigma;
@@ -224,12 +226,12 @@ class Driver {
     settings.threads = std::max(1, threads_ / std::max(outer, 1));
     settings.meter = &meter_;
     std::uint64_t expected = 0;
-    for (int id : ids) expected += evolve_work(result_.patches[id].subcloud.size());
+    for (int id : ids) expected += evolve_work(result_.patches[id].subcloud.size()) + (id == 0 ? 0 : index_build_work(result_.patches[id].subcloud.size()));
     begin_stage("evolve", begin, begin + 0.8 * (end - begin), expected);
     meter_.run(ids.size(), outer, [&](std::size_t k) {
       Patch& patch = result_.patches[ids[k]];
       const bool root = patch.parent < 0;
-      if (!root) indices[k] = std::make_unique<CloudIndex>(points_, patch.subcloud);
+      if (!root) indices[k] = std::make_unique<CloudIndex>(points_, patch.subcloud, IndexBuild{settings.threads, &meter_});
       projectors[k] = std::make_unique<DirectedProjector>(root ? *cloud_index_ : *indices[k], result_.length_scale);
       // Only the root starts far from the cloud, from the Coons patch of its boundary.
       if (root) evolve_patch_with_restart(patch, points_, *projectors[k], settings);

@@ -1,6 +1,8 @@
 // The cloud index: k nearest, radius and ray-neighbourhood queries agree with brute force on
 // random clouds and subsets (answers are indices into the full cloud), and the length scale h
-// is the pitch of a regular grid, ignores duplicates and scales exactly with the input.
+// is the pitch of a regular grid, ignores duplicates and scales exactly with the input. A
+// cloud indexed as a forest of chunks answers the same, its build counts its work, reports
+// between chunks and stops on a cancel, and does not depend on the thread count.
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 
 #include "cloud_index.hpp"
 #include "error.hpp"
+#include "work_meter.hpp"
 
 // cmocka last (its fail() macro would hide dbs::fail), with C linkage (its header does
 // not declare it).
@@ -146,6 +149,82 @@ void spacing_scales_exactly(void**) {
   assert_true(cloud_spacing(again) == h);
 }
 
+void forest_queries_match_brute_force(void**) {
+  const std::vector<Vec3> pts = random_cloud(6000, 7);
+  IndexBuild build;
+  build.chunk_points = 500;
+  build.threads = 2;
+  CloudIndex index(pts, build);
+  assert_int_equal(index.chunks(), 16);  // 6000 halved four times: 375 points a chunk
+  assert_int_equal(index.size(), 6000);
+  assert_int_equal(index.point_index(4321), 4321);  // the input order, not the chunks'
+  check_queries(index, iota(pts.size()), 8);
+
+  std::vector<std::size_t> subset;
+  for (std::size_t i = 1; i < pts.size(); i += 2) subset.push_back(i);
+  CloudIndex part(pts, subset, build);
+  assert_int_equal(part.chunks(), 8);
+  assert_int_equal(part.point_index(10), 21);
+  check_queries(part, subset, 9);
+}
+
+void forest_does_not_depend_on_threads(void**) {
+  const std::vector<Vec3> pts = random_cloud(9000, 10);
+  IndexBuild one, two;
+  one.chunk_points = two.chunk_points = 700;
+  two.threads = 2;
+  CloudIndex a(pts, one), b(pts, two);
+  assert_int_equal(a.chunks(), b.chunks());
+  std::vector<std::size_t> ia, ib;
+  std::vector<double> da, db;
+  for (int q = 0; q < 50; ++q) {
+    const Vec3 p = pts[static_cast<std::size_t>(q) * 173];
+    a.knn(p, 20, ia, da);
+    b.knn(p, 20, ib, db);
+    assert_true(ia == ib && da == db);
+    a.near_ray(p, Vec3(0.1, 0.2, 1.0), 0.01, ia);
+    b.near_ray(p, Vec3(0.1, 0.2, 1.0), 0.01, ib);
+    assert_true(ia == ib);  // the same points in the same order: sums over them agree bitwise
+    assert_true(!ia.empty());
+  }
+}
+
+void forest_build_is_metered_and_cancellable(void**) {
+  const std::vector<Vec3> pts = random_cloud(40000, 11);
+  IndexBuild build;
+  build.chunk_points = 2500;  // 16 chunks
+  build.threads = 2;
+  // Every halving pass and every tree counted: units as index_build_work says, reports
+  // spread over the build (a report every 64 units, a chunk being 78).
+  WorkMeter meter(64);
+  int reports = 0;
+  meter.set_report([&] { ++reports; });
+  build.meter = &meter;
+  {
+    CloudIndex index(pts, build);
+    assert_int_equal(index.chunks(), 16);
+  }
+  assert_int_equal(meter.done(), index_build_work(pts.size(), 2500));
+  assert_int_equal(meter.done(), 40000 * 5 / 32);
+  assert_true(reports >= 50);
+
+  // A cancel from the third report stops the build: no index, the cancel's error.
+  WorkMeter cancelling(64);
+  int seen = 0;
+  cancelling.set_report([&] {
+    if (++seen == 3) throw Error(ErrorCode::Cancelled, "cancelled by the test");
+  });
+  build.meter = &cancelling;
+  bool cancelled = false;
+  try {
+    CloudIndex index(pts, build);
+  } catch (const Error& e) {
+    cancelled = e.code() == ErrorCode::Cancelled;
+  }
+  assert_true(cancelled);
+  assert_true(cancelling.done() < index_build_work(pts.size(), 2500));
+}
+
 void errors_name_the_problem(void**) {
   const std::vector<Vec3> pts = random_cloud(10, 6);
   bool thrown = false;
@@ -156,7 +235,7 @@ void errors_name_the_problem(void**) {
   }
   assert_true(thrown);
 
-  CloudIndex empty(pts, {});
+  CloudIndex empty(pts, std::vector<std::size_t>{});
   assert_int_equal(empty.size(), 0);
   std::vector<std::size_t> idx{1};
   std::vector<double> d2;
@@ -191,6 +270,9 @@ int main() {
       cmocka_unit_test(subset_queries_answer_full_cloud_indices),
       cmocka_unit_test(spacing_is_the_pitch_of_a_grid),
       cmocka_unit_test(spacing_scales_exactly),
+      cmocka_unit_test(forest_queries_match_brute_force),
+      cmocka_unit_test(forest_does_not_depend_on_threads),
+      cmocka_unit_test(forest_build_is_metered_and_cancellable),
       cmocka_unit_test(errors_name_the_problem),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
