@@ -86,13 +86,18 @@ std::uint8_t membership(const Vec3& p, const std::array<ChildTest, 4>& children)
   // Most points lie well inside one child: when the distance to its nearest sample (an
   // upper bound of its distance) is within that child's limit and below every other child's
   // lower bound, no other child can be nearer, and the loop below would give the point to
-  // that child alone: the answer without projecting.
+  // that child alone: the answer without projecting. Near a seam the boxes of the children
+  // overlap; there a child's nearest sample, less how far its surface may lie from its
+  // samples, is the sharper lower bound (a k-d query instead of a projection).
   const int first = order[0];
   if (lower[first] <= children[first].own_limit) {
     first_sample = children[first].projector->nearest_sample(p);
     const double upper = first_sample.distance;
     bool alone = upper <= children[first].own_limit;
-    for (int k = 1; k < 4 && alone; ++k) alone = lower[order[k]] > upper;
+    for (int k = 1; k < 4 && alone && lower[order[k]] <= upper; ++k) {
+      const SurfaceProjector& other = *children[order[k]].projector;
+      alone = other.sample_distance(p) - other.sample_cover() > upper;
+    }
     if (alone) return static_cast<std::uint8_t>(1u << first);
   }
   int owner = -1;

@@ -31,6 +31,8 @@ constexpr double kRoundingGrowth = 16.0;
 /// The residual S - q counts as leaving the patch through a side when the cosine of its
 /// angle with the inward tangent is below -kOutwardCosine; smaller angles are rounding.
 constexpr double kOutwardCosine = 1e-9;
+/// sample_cover()'s margin over half the longest cell diagonal.
+constexpr double kCoverMargin = 1.5;
 
 double clamp_unit(double x) { return std::min(1.0, std::max(0.0, x)); }
 
@@ -85,6 +87,23 @@ struct SurfaceProjector::Impl {
     return *index_;
   }
 
+  /// SurfaceProjector::sample_cover(). Inside a cell of a flat grid every point lies within
+  /// half the cell's longer diagonal of a corner; the surface is a cubic spline over a much
+  /// coarser grid, so its bulge inside a cell is a small fraction of that (kCoverMargin).
+  double cover() const {
+    std::call_once(covered, [&] {
+      const std::vector<Vec3>& g = grid();
+      double longest = 0.0;
+      for (int j = 0; j + 1 < samples; ++j)
+        for (int i = 0; i + 1 < samples; ++i) {
+          const std::size_t k = static_cast<std::size_t>(j) * samples + i;
+          longest = std::max({longest, (g[k] - g[k + samples + 1]).norm(), (g[k + 1] - g[k + samples]).norm()});
+        }
+      cover_ = kCoverMargin * 0.5 * longest;
+    });
+    return cover_;
+  }
+
   /// eval_derivs at every sample (u fastest), made by prepare(); empty until then.
   std::vector<SurfacePoint> tabulated;
 
@@ -97,6 +116,8 @@ struct SurfaceProjector::Impl {
   mutable std::once_flag built;
   mutable std::vector<Vec3> grid_;
   mutable std::unique_ptr<CloudIndex> index_;
+  mutable std::once_flag covered;
+  mutable double cover_ = 0.0;
 
  public:
 
@@ -277,6 +298,8 @@ SurfaceProjector::SurfaceProjector(const BaseSurface& surface, FootPrecision pre
 SurfaceProjector::~SurfaceProjector() = default;
 
 double SurfaceProjector::sample_distance(const Vec3& q) const { return nearest_sample(q).distance; }
+
+double SurfaceProjector::sample_cover() const { return impl_->cover(); }
 
 SurfaceProjector::Sample SurfaceProjector::nearest_sample(const Vec3& q) const {
   if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::nearest_sample: the point is not finite");

@@ -58,6 +58,11 @@ class SurfaceProjector {
   Sample nearest_sample(const Vec3& q) const;
   /// nearest_sample(q).distance.
   double sample_distance(const Vec3& q) const;
+  /// How far a point of the surface may lie from its nearest sample: half the longest
+  /// diagonal of any cell of the sample grid, with a margin for the surface's bulge inside a
+  /// cell. So sample_distance(q) - sample_cover() bounds the distance of q to the surface
+  /// from below (computed with the samples, on first use).
+  double sample_cover() const;
   /// project(q) from nearest_sample(q) found before: the same foot, without its query.
   Foot project(const Vec3& q, const Sample& nearest) const;
   /// The descent from `start` in [0,1]^2 (a foot of q found before on a nearby surface)

@@ -1,8 +1,9 @@
 // Orthogonal projection onto a base surface: the affine inverse on a planar patch, the
 // nearest boundary point (inside = false) beyond the border, the nearer arm of a U-shaped
 // trough whose arms face each other, (u,v) recovered on a curved surface, invariance to
-// scaling by 1000 plus a rigid motion, and concurrent calls that agree bit for bit with
-// serial ones.
+// scaling by 1000 plus a rigid motion, concurrent calls that agree bit for bit with
+// serial ones, and a sample cover that bounds every surface point's distance to its nearest
+// sample (so that a sample distance less the cover bounds a distance from below).
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -253,6 +254,36 @@ void concurrent_calls_match_serial_ones(void**) {
   }
 }
 
+void sample_cover_bounds_the_distance_from_below(void**) {
+  // A flat 3 x 2 rectangle sampled 64 x 64: cells of 3/63 x 2/63, half a diagonal
+  // sqrt(13)/126, and the margin of 1.5.
+  const Rectangle rect;
+  const BaseSurface flat = rect.surface();
+  const SurfaceProjector flat_projector(flat);
+  assert_true(std::abs(flat_projector.sample_cover() - 1.5 * std::sqrt(13.0) / 126.0) <= 1e-12);
+
+  const BaseSurface surface = curved_surface();
+  const SurfaceProjector projector(surface, dbs::FootPrecision::Distance);
+  const double cover = projector.sample_cover();
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), lift(-0.3, 0.3);
+  double widest = 0.0;  // the largest distance of a surface point to its nearest sample
+  for (int k = 0; k < 20000; ++k) {
+    // Every other point at the centre of a sample cell, where the samples are farthest.
+    double u = unit(rng), v = unit(rng);
+    if (k % 2) {
+      u = (std::floor(u * 63.0) + 0.5) / 63.0;
+      v = (std::floor(v * 63.0) + 0.5) / 63.0;
+    }
+    const Vec3 on = surface.eval(u, v);
+    widest = std::max(widest, projector.sample_distance(on));
+    const Vec3 q = on + lift(rng) * surface.normal(u, v);
+    assert_true(projector.sample_distance(q) - cover <= projector.project(q).distance);
+  }
+  assert_true(widest <= cover);
+  assert_true(widest >= 0.5 * cover);  // not so loose that it prunes nothing
+}
+
 void bad_input_is_rejected(void**) {
   const BaseSurface surface = Rectangle().surface();
   bool thrown = false;
@@ -283,6 +314,7 @@ int main() {
       cmocka_unit_test(distance_precision_gives_the_same_distances),
       cmocka_unit_test(projection_is_invariant_to_scale_and_rigid_motion),
       cmocka_unit_test(concurrent_calls_match_serial_ones),
+      cmocka_unit_test(sample_cover_bounds_the_distance_from_below),
       cmocka_unit_test(bad_input_is_rejected),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
