@@ -56,67 +56,108 @@ struct ChildTest {
   }
 };
 
-/// Which children (bit i = child i) point p joins: A4.3 and A4.4 with the rules of the
-/// header. The distance to a child is projected only when its lower bound says it can
-/// matter, so a point close to one child is usually projected once instead of four times;
-/// the outcome is that of projecting on all four.
-std::uint8_t membership(const Vec3& p, const std::array<ChildTest, 4>& children) {
-  std::array<double, 4> lower, d;
-  d.fill(std::numeric_limits<double>::infinity());
-  std::array<bool, 4> known{};
-  std::array<int, 4> order{{0, 1, 2, 3}};
-  for (int i = 0; i < 4; ++i) lower[i] = children[i].lower_bound(p);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return lower[a] < lower[b] || (lower[a] == lower[b] && a < b); });
-  // The nearest sample of the first child, once looked up below, starts its projection.
-  SurfaceProjector::Sample first_sample{0, -1.0};
-  auto distance = [&](int i) {
-    if (!known[i]) {
-      const SurfaceProjector& projector = *children[i].projector;
-      d[i] = (i == order[0] && first_sample.distance >= 0.0 ? projector.project(p, first_sample) : projector.project(p)).distance;
-      known[i] = true;
+/// What is known of the distances of one point to the four children: bounds from each
+/// child's box and, once looked up, its nearest sample (from above: that sample's distance;
+/// from below: it less the sample cover), and the projected distance once needed. The
+/// bounds decide most of A4's comparisons; a projection is made only where they cannot.
+class ChildDistances {
+ public:
+  ChildDistances(const Vec3& p, const std::array<ChildTest, 4>& children) : p_(p), children_(children) {
+    for (int i = 0; i < 4; ++i) {
+      lower_[i] = children[i].lower_bound(p);
+      upper_[i] = std::numeric_limits<double>::infinity();
     }
-    return d[i];
-  };
-  // Nearer of two children; ties go to the first in child order.
-  auto nearer = [&](int i, int j) { return j < 0 || d[i] < d[j] || (d[i] == d[j] && i < j); };
+  }
+
+  double lower(int i) const { return lower_[i]; }
+  double upper(int i) const { return upper_[i]; }
+
+  /// Tightens child i's bounds with its nearest sample (once).
+  void look_up(int i) {
+    if (sampled_[i]) return;
+    sampled_[i] = true;
+    const SurfaceProjector& projector = *children_[i].projector;
+    sample_[i] = projector.nearest_sample(p_);
+    upper_[i] = sample_[i].distance;
+    lower_[i] = std::max(lower_[i], upper_[i] - projector.sample_cover());
+  }
+
+  /// The projected distance to child i (once), from its nearest sample.
+  double exact(int i) {
+    if (!known_[i]) {
+      look_up(i);
+      lower_[i] = upper_[i] = children_[i].projector->project(p_, sample_[i]).distance;
+      known_[i] = true;
+    }
+    return lower_[i];
+  }
+
+ private:
+  const Vec3& p_;
+  const std::array<ChildTest, 4>& children_;
+  std::array<double, 4> lower_, upper_;
+  std::array<SurfaceProjector::Sample, 4> sample_{};
+  std::array<bool, 4> sampled_{}, known_{};
+};
+
+/// Which children (bit i = child i) point p joins: A4.3 and A4.4 with the rules of the
+/// header. A distance is projected only when its bounds leave a comparison open, so a point
+/// close to one child is usually not projected at all; the outcome is that of projecting on
+/// all four.
+std::uint8_t membership(const Vec3& p, const std::array<ChildTest, 4>& children) {
+  ChildDistances d(p, children);
+  std::array<int, 4> order{{0, 1, 2, 3}};
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return d.lower(a) < d.lower(b) || (d.lower(a) == d.lower(b) && a < b); });
+  // Nearer of two children by projected distance; ties go to the first in child order.
+  auto nearer = [&](int i, int j) { return j < 0 || d.exact(i) < d.exact(j) || (d.exact(i) == d.exact(j) && i < j); };
 
   // A4.4: within the "own" limit of some child the point belongs to that child alone. When
   // several children qualify (near a seam) the nearest one owns it, so a point is never
   // given only to a child it lies outside of.
-  // Most points lie well inside one child: when the distance to its nearest sample (an
-  // upper bound of its distance) is within that child's limit and below every other child's
-  // lower bound, no other child can be nearer, and the loop below would give the point to
-  // that child alone: the answer without projecting. Near a seam the boxes of the children
-  // overlap; there a child's nearest sample, less how far its surface may lie from its
-  // samples, is the sharper lower bound (a k-d query instead of a projection).
+  // Most points lie well inside one child: when the distance to its nearest sample is within
+  // that child's limit and below every other child's lower bound, no other child can be
+  // nearer, and the loop below would give the point to that child alone.
   const int first = order[0];
-  if (lower[first] <= children[first].own_limit) {
-    first_sample = children[first].projector->nearest_sample(p);
-    const double upper = first_sample.distance;
+  if (d.lower(first) <= children[first].own_limit) {
+    d.look_up(first);
+    const double upper = d.upper(first);
     bool alone = upper <= children[first].own_limit;
-    for (int k = 1; k < 4 && alone && lower[order[k]] <= upper; ++k) {
-      const SurfaceProjector& other = *children[order[k]].projector;
-      alone = other.sample_distance(p) - other.sample_cover() > upper;
+    for (int k = 1; k < 4 && alone && d.lower(order[k]) <= upper; ++k) {
+      d.look_up(order[k]);
+      alone = d.lower(order[k]) > upper;
     }
     if (alone) return static_cast<std::uint8_t>(1u << first);
   }
   int owner = -1;
   for (int i : order) {
-    if (lower[i] > children[i].own_limit || (owner >= 0 && lower[i] > d[owner])) continue;
-    if (distance(i) <= children[i].own_limit && nearer(i, owner)) owner = i;
+    const double limit = children[i].own_limit;
+    // A child that cannot be within its limit, or is farther than the owner found, is passed.
+    auto passed = [&] { return d.lower(i) > limit || (owner >= 0 && d.lower(i) > d.exact(owner)); };
+    if (passed()) continue;
+    d.look_up(i);
+    if (passed()) continue;
+    if (d.exact(i) <= limit && nearer(i, owner)) owner = i;
   }
   if (owner >= 0) return static_cast<std::uint8_t>(1u << owner);
 
   // A4.3: every child within the "near" limit.
   unsigned mask = 0;
   for (int i = 0; i < 4; ++i) {
-    if (lower[i] <= children[i].near_limit && distance(i) <= children[i].near_limit) mask |= 1u << i;
+    const double limit = children[i].near_limit;
+    if (d.lower(i) > limit) continue;
+    d.look_up(i);
+    if (d.upper(i) <= limit || (d.lower(i) <= limit && d.exact(i) <= limit)) mask |= 1u << i;
   }
-  // C(k) must be the union of the subclouds: a point near no child goes to the nearest.
+  // C(k) must be the union of the subclouds: a point near no child goes to the nearest
+  // (projected in the order of their lower bounds, up to one that cannot be nearer). Such
+  // points are common deep in the quadtree of an overhang: points of other sheets that a
+  // subcloud holds since an earlier split.
   if (mask == 0) {
+    for (int i = 0; i < 4; ++i) d.look_up(i);
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return d.lower(a) < d.lower(b) || (d.lower(a) == d.lower(b) && a < b); });
     int nearest = -1;
-    for (int i = 0; i < 4; ++i) {
-      distance(i);
+    for (int i : order) {
+      if (nearest >= 0 && d.lower(i) > d.exact(nearest)) break;
       if (nearer(i, nearest)) nearest = i;
     }
     mask = 1u << nearest;
