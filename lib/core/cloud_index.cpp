@@ -61,7 +61,7 @@ struct Dataset {
 
 using Metric = nanoflann::L2_Simple_Adaptor<double, Dataset, double, std::uint32_t>;
 using Tree = nanoflann::KDTreeSingleIndexAdaptor<Metric, Dataset, 3, std::uint32_t>;
-constexpr std::size_t kLeafSize = 12;
+constexpr std::size_t kLeafSize = 24;
 
 #if NANOFLANN_VERSION >= 0x150
 using RadiusMatch = nanoflann::ResultItem<std::uint32_t, double>;
@@ -227,7 +227,8 @@ struct CloudIndex::Impl {
 
 namespace {
 
-std::vector<std::uint32_t> checked_subset(const std::vector<Vec3>& points, const std::vector<std::size_t>& subset) {
+template <class Index>
+std::vector<std::uint32_t> checked_subset(const std::vector<Vec3>& points, const std::vector<Index>& subset) {
   if (points.size() > std::numeric_limits<std::uint32_t>::max()) fail(ErrorCode::OutOfRange, "CloudIndex: more than 2^32-1 points");
   std::vector<std::uint32_t> checked(subset.size());
   for (std::size_t k = 0; k < subset.size(); ++k) {
@@ -246,9 +247,12 @@ std::uint64_t index_build_work(std::size_t n, std::size_t chunk_points) {
   return index_units(0, n) * static_cast<std::uint64_t>(halving_passes(n, chunk_points) + 1);
 }
 
-CloudIndex::CloudIndex(const std::vector<Vec3>& points, const IndexBuild& build) : impl_(std::make_unique<Impl>(points, checked_subset(points, {}), true, build)) {}
+CloudIndex::CloudIndex(const std::vector<Vec3>& points, const IndexBuild& build) : impl_(std::make_unique<Impl>(points, checked_subset(points, PointList()), true, build)) {}
 
 CloudIndex::CloudIndex(const std::vector<Vec3>& points, const std::vector<std::size_t>& subset, const IndexBuild& build)
+    : impl_(std::make_unique<Impl>(points, checked_subset(points, subset), false, build)) {}
+
+CloudIndex::CloudIndex(const std::vector<Vec3>& points, const PointList& subset, const IndexBuild& build)
     : impl_(std::make_unique<Impl>(points, checked_subset(points, subset), false, build)) {}
 
 CloudIndex::~CloudIndex() = default;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geometry.hpp"
+#include "point_list.hpp"
 
 namespace dbs {
 
@@ -35,6 +36,7 @@ class CloudIndex {
   explicit CloudIndex(const std::vector<Vec3>& points, const IndexBuild& build = IndexBuild());
   /// Indexes only points[subset[k]]; queries still answer with indices into `points`.
   CloudIndex(const std::vector<Vec3>& points, const std::vector<std::size_t>& subset, const IndexBuild& build = IndexBuild());
+  CloudIndex(const std::vector<Vec3>& points, const PointList& subset, const IndexBuild& build = IndexBuild());
   ~CloudIndex();
   CloudIndex(const CloudIndex&) = delete;
   CloudIndex& operator=(const CloudIndex&) = delete;

@@ -51,7 +51,7 @@ void project_damped(Patch& patch, int grid, const DirectedProjector& projector, 
 
 }  // namespace
 
-void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean, double& out_max,
+void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const PointList& indices, std::size_t stride, int threads, double& out_mean, double& out_max,
                        LossKind loss, double loss_scale, double* out_loss_mean, WorkMeter* meter) {
   if (indices.empty()) {
     out_mean = out_max = 0.0;
@@ -62,7 +62,7 @@ void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& poin
   measure_distances(projector, points, indices, stride, threads, out_mean, out_max, loss, loss_scale, out_loss_mean, meter);
 }
 
-void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean,
+void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3>& points, const PointList& indices, std::size_t stride, int threads, double& out_mean,
                        double& out_max, LossKind loss, double loss_scale, double* out_loss_mean, WorkMeter* meter, std::vector<Vec2>* feet, std::size_t feet_step) {
   stride = std::max<std::size_t>(stride, 1);
   const std::size_t count = (indices.size() + stride - 1) / stride;
@@ -153,7 +153,7 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
 void evolve_patch_with_restart(Patch& patch, const std::vector<Vec3>& points, const DirectedProjector& projector, const EvolveSettings& settings) {
   // The start without the subcloud (the root's is the whole cloud): each candidate borrows
   // the patch's for its evolution.
-  std::vector<std::size_t> subcloud;
+  PointList subcloud;
   subcloud.swap(patch.subcloud);
   const Patch start = patch;
   subcloud.swap(patch.subcloud);

@@ -78,13 +78,13 @@ void evolve_patch_with_restart(Patch& patch, const std::vector<Vec3>& points, co
 /// deterministic for any thread count. `out_loss_mean`, when given, receives the mean of
 /// robust_distance(loss, loss_scale, d) over the same points; `meter` (may be null) counts a
 /// unit per point.
-void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean, double& out_max,
+void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& points, const PointList& indices, std::size_t stride, int threads, double& out_mean, double& out_max,
                        LossKind loss = LossKind::None, double loss_scale = 0.0, double* out_loss_mean = nullptr, WorkMeter* meter = nullptr);
 /// The same with a projector onto the surface (FootPrecision::Distance or Measure), built once for
 /// several measurements of one surface. With `feet`, the k-th point measured starts its descent
 /// from (*feet)[k * feet_step] (from the nearest sample where that is NaN) and leaves its foot
 /// there.
-void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3>& points, const std::vector<std::size_t>& indices, std::size_t stride, int threads, double& out_mean,
+void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3>& points, const PointList& indices, std::size_t stride, int threads, double& out_mean,
                        double& out_max, LossKind loss = LossKind::None, double loss_scale = 0.0, double* out_loss_mean = nullptr, WorkMeter* meter = nullptr,
                        std::vector<Vec2>* feet = nullptr, std::size_t feet_step = 1);
 

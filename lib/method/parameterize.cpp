@@ -86,14 +86,19 @@ class Driver {
     result_.far_points = points_.size() - body_.body.size();
     result_.requested_accuracy = options.accuracy > 0.0 ? options.accuracy : options.relative_accuracy * body_.diagonal;
     Patch root{BaseSurface(boundary)};
-    root.subcloud = body_.body;
+    if (points_.size() > std::numeric_limits<std::uint32_t>::max()) fail(ErrorCode::OutOfRange, "the cloud has " + std::to_string(points_.size()) + " points; at most 4294967295 are supported");
+    root.subcloud.assign(body_.body.begin(), body_.body.end());
+    // A cloud without far points is all body: its list of every index is the root's
+    // subcloud, and is not kept twice (8 bytes a point at the peak of a large run).
+    body_points_ = body_.body.size();
+    if (result_.far_points == 0) std::vector<std::size_t>().swap(body_.body);
     result_.patches.push_back(std::move(root));
   }
 
   Result run() {
     const auto start = Clock::now();
     // The tree's build and the noise estimate's fits (about 20,000).
-    begin_stage("index", 0.0, kIndexEnd, index_build_work(body_.body.size()) + 20000);
+    begin_stage("index", 0.0, kIndexEnd, index_build_work(body_points_) + 20000);
     // The root's subcloud is the whole cloud in input order, so this index (the same trees as
     // one over that subcloud) also serves the root's evolution and subdivision.
     const IndexBuild build{threads_, &meter_};
@@ -125,7 +130,7 @@ class Driver {
     project_across_borders();
     // Judged on the feet, before the repair moves any point.
     check_parameters(result_, checks_);
-    warn_or_fail(parameter_warnings(checks_, body_.body.size(), options_.crop != 0));
+    warn_or_fail(parameter_warnings(checks_, body_points_, options_.crop != 0));
     choose_cropped();
     result_.stage_seconds.parameterize += seconds_since(parameterize_start);
     // The fold measure judges the result; with the repair on it judges it first for the
@@ -251,6 +256,17 @@ class Driver {
       const Patch& p = result_.patches[ids[k]];
       if (!p.accurate && level < options_.max_level && p.point_count >= kMinPointsToSubdivide) split.push_back(static_cast<int>(k));
     }
+    // A patch's index serves its evolution and its split only: a leaf's goes now, a split
+    // patch's right after its split (the root's index is the whole cloud's).
+    auto release_index = [&](std::size_t k) {
+      projectors[k].reset();
+      indices[k].reset();
+      if (result_.patches[ids[k]].parent < 0) cloud_index_.reset();
+    };
+    for (std::size_t k = 0, next = 0; k < ids.size(); ++k) {
+      if (next < split.size() && static_cast<std::size_t>(split[next]) == k) ++next;
+      else release_index(k);
+    }
     std::vector<std::unique_ptr<std::array<Patch, 4>>> owned(split.size());
     expected = 0;
     for (int k : split) expected += result_.patches[ids[static_cast<std::size_t>(k)]].subcloud.size();
@@ -262,8 +278,12 @@ class Driver {
       std::array<Patch, 4>& quad = *owned[s];
       const std::array<const BaseSurface*, 4> surfaces{{&quad[0].surface, &quad[1].surface, &quad[2].surface, &quad[3].surface}};
       const int inner = std::max(1, threads_ / std::max<int>(1, static_cast<int>(split.size())));
-      std::array<std::vector<std::size_t>, 4> parts = split_subcloud(points_, parent.subcloud, surfaces, options_.subcloud_near, options_.subcloud_own, inner, &meter_);
+      std::array<PointList, 4> parts = split_subcloud(points_, parent.subcloud, surfaces, options_.subcloud_near, options_.subcloud_own, inner, &meter_);
       for (int c = 0; c < 4; ++c) quad[c].subcloud = std::move(parts[c]);
+      // An inner patch no longer needs its points (only leaves parameterize, A2) nor its
+      // index: both go now rather than after the level, which lowers the peak of a large run.
+      PointList().swap(result_.patches[ids[k]].subcloud);
+      release_index(k);
     });
     projectors.clear();
     indices.clear();
@@ -301,8 +321,6 @@ class Driver {
         next.push_back(child.id);
         result_.patches.push_back(std::move(child));
       }
-      // An inner patch no longer needs its points: only leaves parameterize (A2).
-      std::vector<std::size_t>().swap(result_.patches[parent_id].subcloud);
     }
 
     if (options_.on_level) {
@@ -603,8 +621,8 @@ class Driver {
       result_.cropped_points = static_cast<std::size_t>(std::count(result_.cropped.begin(), result_.cropped.end(), 1));
     }
     kept_.clear();
-    for (std::size_t i : body_.body)
-      if (!result_.cropped[i]) kept_.push_back(i);
+    for (std::size_t i = 0; i < n; ++i)
+      if (!body_.far[i] && !result_.cropped[i]) kept_.push_back(i);
     if (kept_.empty())
       fail(ErrorCode::Degenerate, "all " + std::to_string(n) + " points lie outside the boundary (more than a point spacing from the surface at the domain's edge) and were cropped: is it the boundary of this cloud?");
     if (result_.cropped_points > 0) judge_leaves_on_kept_points();
@@ -682,6 +700,7 @@ class Driver {
   RefinementSettings refinement_;
   std::vector<char> inside_;  // per point: its foot lies inside its leaf (A2)
   std::vector<std::size_t> kept_;  // the body less the cropped points, increasing
+  std::size_t body_points_ = 0;    // body_.body's size (the list itself is dropped when it is every point)
 };
 
 }  // namespace

@@ -13,10 +13,11 @@
 #include <vector>
 
 #include "base_surface.hpp"
+#include "point_list.hpp"
 #include "work_meter.hpp"
 
 namespace dbs {
 
-std::array<std::vector<std::size_t>, 4> split_subcloud(const std::vector<Vec3>& points, const std::vector<std::size_t>& parent_subcloud, const std::array<const BaseSurface*, 4>& children, double near, double own, int threads, WorkMeter* meter = nullptr);
+std::array<PointList, 4> split_subcloud(const std::vector<Vec3>& points, const PointList& parent_subcloud, const std::array<const BaseSurface*, 4>& children, double near, double own, int threads, WorkMeter* meter = nullptr);
 
 }  // namespace dbs

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "base_surface.hpp"
+#include "point_list.hpp"
 
 namespace dbs {
 
@@ -17,7 +18,7 @@ struct Patch {
   Rect rect;
   BaseSurface surface;
   Grid grid;                           // the grid the surface interpolates
-  std::vector<std::size_t> subcloud;   // indices into the cloud (kept for leaves)
+  PointList subcloud;                  // indices into the cloud (kept for leaves)
   std::size_t point_count = 0;         // size of the subcloud
   double mean_distance = 0.0;          // of the subcloud to the surface
   double max_distance = 0.0;

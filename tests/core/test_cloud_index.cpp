@@ -229,7 +229,7 @@ void errors_name_the_problem(void**) {
   const std::vector<Vec3> pts = random_cloud(10, 6);
   bool thrown = false;
   try {
-    CloudIndex bad(pts, {1, 2, 10});
+    CloudIndex bad(pts, std::vector<std::size_t>{1, 2, 10});
   } catch (const Error& e) {
     thrown = e.code() == ErrorCode::OutOfRange && std::string(e.what()).find("subset entry 2") != std::string::npos;
   }

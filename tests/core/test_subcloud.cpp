@@ -96,7 +96,7 @@ std::vector<Vec3> layered_cloud() {
   return pts;
 }
 
-std::vector<unsigned> masks_of(const std::array<std::vector<std::size_t>, 4>& parts, std::size_t n) {
+std::vector<unsigned> masks_of(const std::array<PointList, 4>& parts, std::size_t n) {
   std::vector<unsigned> mask(n, 0);
   for (int i = 0; i < 4; ++i) {
     for (std::size_t p : parts[i]) mask[p] |= 1u << i;
@@ -111,9 +111,9 @@ void points_join_children_by_the_a4_rules(void**) {
   // those must appear in no child.
   const std::size_t n = pts.size();
   auto skipped = [n](std::size_t k) { return k + 4 < n && k % 7 == 3; };
-  std::vector<std::size_t> parent;
+  PointList parent;
   for (std::size_t k = 0; k < n; ++k) {
-    if (!skipped(k)) parent.push_back(k);
+    if (!skipped(k)) parent.push_back(static_cast<std::uint32_t>(k));
   }
   const auto parts = split_subcloud(pts, parent, children.pointers(), kNear, kOwn, 2);
   const std::vector<unsigned> mask = masks_of(parts, pts.size());
@@ -159,8 +159,8 @@ void points_join_children_by_the_a4_rules(void**) {
 void thread_count_does_not_change_the_split(void**) {
   const std::vector<Vec3> pts = layered_cloud();
   const Children children;
-  std::vector<std::size_t> parent(pts.size());
-  for (std::size_t k = 0; k < pts.size(); ++k) parent[k] = k;
+  PointList parent(pts.size());
+  for (std::size_t k = 0; k < pts.size(); ++k) parent[k] = static_cast<std::uint32_t>(k);
   const auto one = split_subcloud(pts, parent, children.pointers(), kNear, kOwn, 1);
   for (int threads : {2, 3}) {
     const auto many = split_subcloud(pts, parent, children.pointers(), kNear, kOwn, threads);
