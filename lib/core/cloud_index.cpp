@@ -61,7 +61,7 @@ struct Dataset {
 
 using Metric = nanoflann::L2_Simple_Adaptor<double, Dataset, double, std::uint32_t>;
 using Tree = nanoflann::KDTreeSingleIndexAdaptor<Metric, Dataset, 3, std::uint32_t>;
-constexpr std::size_t kLeafSize = 24;
+constexpr std::size_t kLeafSize = 12;
 
 #if NANOFLANN_VERSION >= 0x150
 using RadiusMatch = nanoflann::ResultItem<std::uint32_t, double>;

@@ -357,7 +357,7 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
     const int leaf = result.leaf_at(result.u[i], result.v[i]);
     result.distance[i] = (result.evaluate(result.u[i], result.v[i]) - points[i]).norm();
     result.patch[i] = leaf;
-    result.level[i] = result.patches[leaf].level;
+    result.level[i] = static_cast<std::int8_t>(result.patches[leaf].level);
     result.repaired[i] = 1;
   }
   if (repaired == 0) return {};
@@ -379,7 +379,7 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
     result.u[i] = before[f].u;
     result.v[i] = before[f].v;
     result.patch[i] = before[f].patch;
-    result.level[i] = before[f].level;
+    result.level[i] = static_cast<std::int8_t>(before[f].level);
     result.distance[i] = before[f].distance;
     // its foot's leaf may have been refitted meanwhile
     if (refitted[static_cast<std::size_t>(result.leaf_at(result.u[i], result.v[i]))]) result.distance[i] = (result.evaluate(result.u[i], result.v[i]) - points[i]).norm();

@@ -120,7 +120,6 @@ class Driver {
     set_refinement();
     report(kIndexEnd, "index");
 
-    start_parameters();
     std::vector<int> level_ids{0};
     for (int level = 0; !level_ids.empty(); ++level) {
       level_ids = process_level(level, level_ids);
@@ -256,8 +255,8 @@ class Driver {
       const Patch& p = result_.patches[ids[k]];
       if (!p.accurate && level < options_.max_level && p.point_count >= kMinPointsToSubdivide) split.push_back(static_cast<int>(k));
     }
-    // A patch's index serves its evolution and its split only: a leaf's goes now, a split
-    // patch's right after its split (the root's index is the whole cloud's).
+    // A patch's index serves its evolution and its middle curves only: a leaf's goes now, a
+    // split patch's once its curves are made (the root's index is the whole cloud's).
     auto release_index = [&](std::size_t k) {
       projectors[k].reset();
       indices[k].reset();
@@ -275,15 +274,16 @@ class Driver {
       const std::size_t k = static_cast<std::size_t>(split[s]);
       const Patch& parent = result_.patches[ids[k]];
       owned[s] = std::make_unique<std::array<Patch, 4>>(subdivide_patch(parent, *projectors[k], options_.smoothing, options_.initial_grid, refinement_));
+      // The middle curves were the index's last use: it goes before the children's lists
+      // are made, which lowers the peak of a large run.
+      release_index(k);
       std::array<Patch, 4>& quad = *owned[s];
       const std::array<const BaseSurface*, 4> surfaces{{&quad[0].surface, &quad[1].surface, &quad[2].surface, &quad[3].surface}};
       const int inner = std::max(1, threads_ / std::max<int>(1, static_cast<int>(split.size())));
       std::array<PointList, 4> parts = split_subcloud(points_, parent.subcloud, surfaces, options_.subcloud_near, options_.subcloud_own, inner, &meter_);
       for (int c = 0; c < 4; ++c) quad[c].subcloud = std::move(parts[c]);
-      // An inner patch no longer needs its points (only leaves parameterize, A2) nor its
-      // index: both go now rather than after the level, which lowers the peak of a large run.
+      // An inner patch no longer needs its points (only leaves parameterize, A2).
       PointList().swap(result_.patches[ids[k]].subcloud);
-      release_index(k);
     });
     projectors.clear();
     indices.clear();
@@ -299,6 +299,9 @@ class Driver {
       else expected += result_.patches[ids[k]].subcloud.size();
     }
     begin_stage("parameterize", begin + 0.9 * (end - begin), end, expected);
+    // The points' parameters are made with the first leaves: while the upper levels run, the
+    // indices of their patches are alive, and both together would set the peak of the run.
+    if (result_.u.empty() && split.size() < ids.size()) start_parameters();
     std::size_t next_split = 0;
     for (std::size_t k = 0; k < ids.size(); ++k) {
       if (next_split < split.size() && static_cast<std::size_t>(split[next_split]) == k) {
@@ -353,7 +356,7 @@ class Driver {
   /// neighbourhoods from the spacing), so that it costs a bounded share of a large run.
   FoldMeasure judge_folds(std::vector<std::size_t>& judged) {
     // Of the kept points only: `judged` lists them, left empty when they are all the points.
-    const std::vector<std::size_t>& body = kept_;
+    const PointList& body = kept_;
     const std::size_t n = body.size(), count = std::min(n, kFoldJudgedPoints);
     judged.clear();
     if (n == points_.size() && n <= kFoldJudgedPoints) return measure_folds(points_, result_.u, result_.v, result_.noise, threads_, &meter_);
@@ -521,7 +524,7 @@ class Driver {
     result_.v[i] = uv.y();
     result_.distance[i] = foot.distance;
     result_.patch[i] = leaf.id;
-    result_.level[i] = leaf.level;
+    result_.level[i] = static_cast<std::int8_t>(leaf.level);
     inside_[i] = foot.inside ? 1 : 0;
   }
 
@@ -620,9 +623,13 @@ class Driver {
       for (std::size_t i = 0; i < n; ++i) result_.cropped[i] = result_.clamped[i] || body_.far[i];
       result_.cropped_points = static_cast<std::size_t>(std::count(result_.cropped.begin(), result_.cropped.end(), 1));
     }
+    auto kept = [&](std::size_t i) { return !body_.far[i] && !result_.cropped[i]; };
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < n; ++i) count += kept(i);
     kept_.clear();
+    kept_.reserve(count);  // sized first: a list of every point, grown by doubling, held two at its peak
     for (std::size_t i = 0; i < n; ++i)
-      if (!body_.far[i] && !result_.cropped[i]) kept_.push_back(i);
+      if (kept(i)) kept_.push_back(static_cast<std::uint32_t>(i));
     if (kept_.empty())
       fail(ErrorCode::Degenerate, "all " + std::to_string(n) + " points lie outside the boundary (more than a point spacing from the surface at the domain's edge) and were cropped: is it the boundary of this cloud?");
     if (result_.cropped_points > 0) judge_leaves_on_kept_points();
@@ -699,7 +706,7 @@ class Driver {
   Result result_;
   RefinementSettings refinement_;
   std::vector<char> inside_;  // per point: its foot lies inside its leaf (A2)
-  std::vector<std::size_t> kept_;  // the body less the cropped points, increasing
+  PointList kept_;                 // the body less the cropped points, increasing
   std::size_t body_points_ = 0;    // body_.body's size (the list itself is dropped when it is every point)
 };
 

@@ -26,7 +26,8 @@ class RepairSnapshot {
     bool accurate;
   };
   std::vector<double> u_, v_, distance_;
-  std::vector<std::int32_t> patch_, level_;
+  std::vector<std::int32_t> patch_;
+  std::vector<std::int8_t> level_;
   std::vector<char> repaired_;
   std::size_t repaired_points_;
   std::vector<LeafState> leaves_;

@@ -19,7 +19,8 @@ enum PointFlag : std::int32_t {
 struct Result {
   // per point, input order
   std::vector<double> u, v, distance;
-  std::vector<std::int32_t> patch, level;
+  std::vector<std::int32_t> patch;
+  std::vector<std::int8_t> level;  // at most Options' largest max_level, 8: a byte a point
   /// Per point: 1 when the last-resort repair (fold_repair.hpp) gave it its (u,v) from its
   /// neighbours (its distance is then to the surface at that (u,v)); all 0 when it was off.
   std::vector<char> repaired;

@@ -45,7 +45,7 @@ dbs::Result test_result() {
     r.v.push_back(std::fmod(std::sqrt(2.0) * static_cast<double>(i), 1.0));
     r.distance.push_back(i % 5 == 0 ? 0.0 : std::exp(-static_cast<double>(i % 97)) / 3.0);
     r.patch.push_back(static_cast<std::int32_t>(i % 21) + (i == 7 ? 2000000000 : 0));
-    r.level.push_back(static_cast<std::int32_t>(i % 4));
+    r.level.push_back(static_cast<std::int8_t>(i % 4));
   }
   return r;
 }
