@@ -35,7 +35,10 @@ struct ChildTest {
     // rigid motion); the axis-aligned box only speeds up the search.
     CornerFrameBox turning(surface.boundary());
     box = surface.boundary().bounds();
-    for (const Vec3& p : surface.sample(kBoundsSamples, kBoundsSamples).points) {
+    // A displacement with many sites (a large initial_grid) waves between 33 samples: then
+    // four samples a site.
+    const int samples = std::max(kBoundsSamples, 4 * surface.displacement_sites() + 1);
+    for (const Vec3& p : surface.sample(samples, samples).points) {
       box.extend(p);
       turning.extend(p);
     }
@@ -82,11 +85,13 @@ class ChildDistances {
     lower_[i] = std::max(lower_[i], upper_[i] - projector.sample_cover());
   }
 
-  /// The projected distance to child i (once), from its nearest sample.
+  /// The distance to child i (once): its projection from its nearest sample, or that
+  /// sample where it is nearer (a descent that leaves the child ends on the nearest point of
+  /// its boundary, which on a wavy child can lie farther than the sample it started from).
   double exact(int i) {
     if (!known_[i]) {
       look_up(i);
-      lower_[i] = upper_[i] = children_[i].projector->project(p_, sample_[i]).distance;
+      lower_[i] = upper_[i] = std::min(upper_[i], children_[i].projector->project(p_, sample_[i]).distance);
       known_[i] = true;
     }
     return lower_[i];

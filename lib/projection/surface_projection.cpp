@@ -36,6 +36,13 @@ constexpr double kCoverMargin = 1.5;
 
 double clamp_unit(double x) { return std::min(1.0, std::max(0.0, x)); }
 
+double distance_to_segment(const Vec3& q, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0.0 ? clamp_unit((q - a).dot(ab) / length2) : 0.0;
+  return (q - (a + t * ab)).norm();
+}
+
 /// Gauss-Newton converges linearly near the foot, with a rate r estimated from two
 /// successive step lengths; the distance left to the foot is then about step r / (1 - r).
 bool converged(double step, double previous, double tolerance) {
@@ -88,10 +95,14 @@ struct SurfaceProjector::Impl {
   }
 
   /// SurfaceProjector::sample_cover(). Inside a cell of a flat grid every point lies within
-  /// half the cell's longer diagonal of a corner; the surface is a cubic spline over a much
-  /// coarser grid, so its bulge inside a cell is a small fraction of that (kCoverMargin).
+  /// half the cell's longer diagonal of a corner; a cubic spline over at most a quarter of
+  /// the samples' sites bulges inside a cell by a small fraction of that (kCoverMargin).
   double cover() const {
     std::call_once(covered, [&] {
+      if (4 * surface.displacement_sites() > samples) {
+        cover_ = std::numeric_limits<double>::infinity();
+        return;
+      }
       const std::vector<Vec3>& g = grid();
       double longest = 0.0;
       for (int j = 0; j + 1 < samples; ++j)
@@ -99,9 +110,37 @@ struct SurfaceProjector::Impl {
           const std::size_t k = static_cast<std::size_t>(j) * samples + i;
           longest = std::max({longest, (g[k] - g[k + samples + 1]).norm(), (g[k + 1] - g[k + samples]).norm()});
         }
-      cover_ = kCoverMargin * 0.5 * longest;
+      cover_ = kCoverMargin * (0.5 * longest + 2.0 * boundary_wiggle(g));
     });
     return cover_;
+  }
+
+  /// The farthest a vertex of a side's polyline lies from the chord between the two samples
+  /// of that side around it.
+  double boundary_wiggle(const std::vector<Vec3>& g) const {
+    const int last = samples - 1;
+    double farthest = 0.0;
+    for (int side = 0; side < 4; ++side) {
+      const Polyline& curve = surface.boundary().side(static_cast<Side>(side));
+      auto sample = [&](int k) -> const Vec3& {
+        switch (static_cast<Side>(side)) {
+          case Side::Bottom: return g[static_cast<std::size_t>(k)];
+          case Side::Right: return g[static_cast<std::size_t>(k) * samples + last];
+          case Side::Top: return g[static_cast<std::size_t>(last) * samples + k];
+          default: return g[static_cast<std::size_t>(k) * samples];
+        }
+      };
+      double walked = 0.0;
+      const std::vector<Vec3>& pts = curve.points();
+      for (std::size_t i = 0; i < pts.size(); ++i) {
+        if (i > 0) walked += (pts[i] - pts[i - 1]).norm();
+        const double s = std::min(1.0, walked / curve.length()) * last;
+        const int below = std::min(last, static_cast<int>(s));
+        const int above = std::min(last, below + 1);
+        farthest = std::max(farthest, distance_to_segment(pts[i], sample(below), sample(above)));
+      }
+    }
+    return farthest;
   }
 
   /// eval_derivs at every sample (u fastest), made by prepare(); empty until then.

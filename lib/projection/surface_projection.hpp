@@ -58,10 +58,14 @@ class SurfaceProjector {
   Sample nearest_sample(const Vec3& q) const;
   /// nearest_sample(q).distance.
   double sample_distance(const Vec3& q) const;
-  /// How far a point of the surface may lie from its nearest sample: half the longest
-  /// diagonal of any cell of the sample grid, with a margin for the surface's bulge inside a
-  /// cell. So sample_distance(q) - sample_cover() bounds the distance of q to the surface
-  /// from below (computed with the samples, on first use).
+  /// How far a point of the surface may lie from its nearest sample, so that
+  /// sample_distance(q) - sample_cover() bounds the distance of q to the surface from below
+  /// (computed with the samples, on first use): with a margin, half the longest diagonal of
+  /// a sample cell plus twice the farthest a boundary vertex lies from the chord between the
+  /// samples of its side around it (the Coons patch carries a boundary's wiggles between
+  /// samples into the interior). Infinite where the samples do not resolve the surface: a
+  /// displacement with more than samples / 4 sites along a direction can bulge between
+  /// samples by more than any margin.
   double sample_cover() const;
   /// project(q) from nearest_sample(q) found before: the same foot, without its query.
   Foot project(const Vec3& q, const Sample& nearest) const;

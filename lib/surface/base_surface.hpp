@@ -2,6 +2,8 @@
 // displacement that is zero on the boundary and makes the surface interpolate the
 // interior points of a grid (DESIGN.md decision 1). It interpolates its boundary exactly.
 #pragma once
+
+#include <algorithm>
 #include "boundary.hpp"
 #include "coons_patch.hpp"
 #include "grid.hpp"
@@ -23,6 +25,9 @@ class BaseSurface {
   SurfacePoint eval_derivs(double u, double v) const;
   /// Unit normal Su x Sv (falls back to a neighbouring sample where it vanishes).
   Vec3 normal(double u, double v) const;
+  /// The most data sites of the displacement along either direction (0 for the plain Coons
+  /// patch): the finest detail of the interior is about 1 / (that - 1) of the domain.
+  int displacement_sites() const { return std::max(displacement_.sites_u(), displacement_.sites_v()); }
   /// S sampled on a uniform nu x nv grid.
   Grid sample(int nu, int nv) const;
 

@@ -13,6 +13,9 @@ class SplineDisplacement {
   explicit SplineDisplacement(const Grid& values);
 
   bool is_zero() const { return nu_ == 0; }
+  /// Data sites per direction (0 for d == 0).
+  int sites_u() const { return nu_; }
+  int sites_v() const { return nv_; }
   Vec3 eval(double u, double v) const;
   /// Adds eval() at the parameters of `grid` (a uniform grid) to its points, except on its
   /// border (where d vanishes), bit for bit as eval(); the basis of each row and column is
