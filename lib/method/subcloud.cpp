@@ -111,8 +111,10 @@ class ChildDistances {
 /// all four.
 std::uint8_t membership(const Vec3& p, const std::array<ChildTest, 4>& children) {
   ChildDistances d(p, children);
+  // The children in the order of their lower bounds (ties: child order).
   std::array<int, 4> order{{0, 1, 2, 3}};
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return d.lower(a) < d.lower(b) || (d.lower(a) == d.lower(b) && a < b); });
+  auto by_lower = [&] { std::sort(order.begin(), order.end(), [&](int a, int b) { return d.lower(a) < d.lower(b) || (d.lower(a) == d.lower(b) && a < b); }); };
+  by_lower();
   // Nearer of two children by projected distance; ties go to the first in child order.
   auto nearer = [&](int i, int j) { return j < 0 || d.exact(i) < d.exact(j) || (d.exact(i) == d.exact(j) && i < j); };
 
@@ -159,7 +161,7 @@ std::uint8_t membership(const Vec3& p, const std::array<ChildTest, 4>& children)
   // subcloud holds since an earlier split.
   if (mask == 0) {
     for (int i = 0; i < 4; ++i) d.look_up(i);
-    std::sort(order.begin(), order.end(), [&](int a, int b) { return d.lower(a) < d.lower(b) || (d.lower(a) == d.lower(b) && a < b); });
+    by_lower();
     int nearest = -1;
     for (int i : order) {
       if (nearest >= 0 && d.lower(i) > d.exact(nearest)) break;

@@ -1,6 +1,8 @@
-// Algorithm A4: distribute a parent's subcloud among its four children. Every parent point
-// is projected onto each child (points whose foot is outside the child or missing use the
-// nearest point of the child's boundary); a point joins a child when its distance is within
+// Algorithm A4: distribute a parent's subcloud among its four children. A point's distance
+// to a child is that of its projection onto the child (points whose foot is outside the child
+// or missing use the nearest point of the child's boundary), or of the child's nearest
+// sample where that is nearer; bounds of it decide most points without projecting, with the
+// same outcome (subcloud.cpp). A point joins a child when its distance is within
 // `near` x the child's bounding-box diagonal (measured in the frame of its corners, see
 // corner_frame.hpp), and belongs only to that child when within
 // `own` x that diagonal (when several children qualify, the nearest; ties go to the first in
