@@ -116,7 +116,9 @@ struct Run {
 
 /// Writes the shape as DIR/NAME.xyz (with the true parameters as two further columns, which
 /// readers ignore) and DIR/NAME_boundary.txt (docs/FORMATS.md), so that dbs-param can run on
-/// it (--report pictures) and a script can score it; false when a file cannot be written.
+/// it (--report pictures) and a script can score it, and DIR/NAME_triangles.txt (the reference
+/// triangles, three 0-based point indices a line, counter-clockwise in the true parameters);
+/// false when a file cannot be written.
 bool save_shape(const FoldShape& shape, const std::string& dir) {
   const std::string cloud_path = dir + "/" + shape.name + ".xyz", boundary_path = dir + "/" + shape.name + "_boundary.txt";
   std::FILE* cloud = std::fopen(cloud_path.c_str(), "w");
@@ -132,7 +134,12 @@ bool save_shape(const FoldShape& shape, const std::string& dir) {
     std::fprintf(boundary, "%s\n", name);
     for (std::size_t i = 0; i + 2 < points->size(); i += 3) std::fprintf(boundary, "%.17g %.17g %.17g\n", (*points)[i], (*points)[i + 1], (*points)[i + 2]);
   }
-  return std::fclose(boundary) == 0 && cloud_ok;
+  const bool boundary_ok = std::fclose(boundary) == 0;
+  std::FILE* triangles = std::fopen((dir + "/" + shape.name + "_triangles.txt").c_str(), "w");
+  if (!triangles) return false;
+  for (std::size_t t = 0; t < shape.triangle_count(); ++t)
+    std::fprintf(triangles, "%d %d %d\n", shape.triangles[3 * t], shape.triangles[3 * t + 1], shape.triangles[3 * t + 2]);
+  return std::fclose(triangles) == 0 && boundary_ok && cloud_ok;
 }
 
 double stat(const dbs_result* result, int32_t id) {

@@ -8,6 +8,7 @@
 #include "fold_measure.hpp"
 #include "harmonic_fill.hpp"
 #include "parallel.hpp"
+#include "untangle.hpp"
 
 namespace dbs {
 
@@ -105,7 +106,7 @@ double trust_radius(const Result& result, std::size_t i, const std::vector<std::
 /// are not isolated far points, and recomputes the distance of every point of those leaves
 /// at its (u,v). A refit that raises the median distance of the leaf's points is undone.
 /// Returns the ids of the leaves refitted, in increasing order.
-std::vector<int> refit_repaired_leaves(Result& result, const std::vector<Vec3>& points, const std::vector<char>& outlier, int threads) {
+std::vector<int> refit_repaired_leaves(Result& result, const std::vector<Vec3>& points, const std::vector<char>& outlier, const std::vector<char>& marked, int threads) {
   std::vector<std::vector<std::size_t>> data(result.patches.size()), members(result.patches.size());
   std::vector<char> touched(result.patches.size(), 0);
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -113,7 +114,7 @@ std::vector<int> refit_repaired_leaves(Result& result, const std::vector<Vec3>& 
     const std::size_t leaf = static_cast<std::size_t>(result.leaf_at(result.u[i], result.v[i]));
     members[leaf].push_back(i);
     if (!outlier[i]) data[leaf].push_back(i);
-    if (result.repaired[i]) touched[leaf] = 1;
+    if (marked[i]) touched[leaf] = 1;
   }
   std::vector<int> leaves;
   for (std::size_t id = 0; id < touched.size(); ++id)
@@ -246,6 +247,17 @@ std::vector<char> far_from_surface(const Result& result) {
   return far;
 }
 
+/// Points neither repaired nor data of a refit: those far outside the body or cropped
+/// (Result::left_out), and far points that stand alone (gross outliers, see isolated).
+std::vector<char> left_out_or_isolated(const Result& result, const std::vector<Vec3>& points, const CloudIndex& index, const std::vector<char>& is_far, int threads) {
+  std::vector<char> outlier(points.size(), 0);
+  parallel_for(points.size(), threads, [&](std::size_t i) {
+    if (result.left_out(i)) outlier[i] = 1;
+    else if (is_far[i]) outlier[i] = isolated(index, points, i, result.distance[i], result.length_scale) && !in_missed_sheet(index, points, i, is_far, result.length_scale) ? 1 : 0;
+  });
+  return outlier;
+}
+
 }  // namespace
 
 std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter,
@@ -305,12 +317,7 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
   // Gross outliers are left where they are and out of the refit: a harmonic fill would give
   // them the (u,v) of the surface under them anyway, and a fit through them would pull the
   // surface off the clean points.
-  std::vector<char> outlier(n, 0);
-  for (std::size_t i = 0; i < n; ++i) outlier[i] = outside(i) ? 1 : 0;
-  parallel_for(far.size(), threads, [&](std::size_t f) {
-    const std::size_t i = far[f];
-    if (is_far[i]) outlier[i] = isolated(index, points, i, result.distance[i], result.length_scale) && !in_missed_sheet(index, points, i, is_far, result.length_scale) ? 1 : 0;
-  });
+  const std::vector<char> outlier = left_out_or_isolated(result, points, index, is_far, threads);
   far.erase(std::remove_if(far.begin(), far.end(), [&](std::size_t i) { return outlier[i] != 0; }), far.end());
   if (far.empty()) return {};
 
@@ -362,7 +369,7 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
   }
   if (repaired == 0) return {};
   Repair out;
-  out.refitted = refit_repaired_leaves(result, points, outlier, threads);
+  out.refitted = refit_repaired_leaves(result, points, outlier, result.repaired, threads);
   // A repaired point whose leaf kept its surface (its refit would have moved the surface
   // away from most of the leaf's points) goes back to its foot: without the refit the fill
   // only moves it off the surface.
@@ -383,6 +390,62 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
     result.distance[i] = before[f].distance;
     // its foot's leaf may have been refitted meanwhile
     if (refitted[static_cast<std::size_t>(result.leaf_at(result.u[i], result.v[i]))]) result.distance[i] = (result.evaluate(result.u[i], result.v[i]) - points[i]).norm();
+  }
+  return out;
+}
+
+Repair untangle_repaired(Result& result, const std::vector<Vec3>& points, int threads) {
+  const std::size_t n = points.size();
+  if (result.repaired.size() != n || std::none_of(result.repaired.begin(), result.repaired.end(), [](char r) { return r != 0; })) return {};
+  const CloudIndex index(points);
+  const std::vector<char> outlier = left_out_or_isolated(result, points, index, far_from_surface(result), threads);
+  // The repaired points and the ring of their nearest points.
+  std::vector<std::vector<std::size_t>> rings(n);
+  parallel_for(n, threads, [&](std::size_t i) {
+    if (!result.repaired[i]) return;
+    std::vector<double> d2;
+    index.knn(points[i], kRepairNeighbours + 1, rings[i], d2);
+  });
+  std::vector<char> candidate(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t m : rings[i]) candidate[m] = !outlier[m];
+  struct Placement {
+    double u, v, distance;
+    int patch;
+    std::int8_t level;
+  };
+  std::vector<Placement> before(n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (candidate[i]) before[i] = {result.u[i], result.v[i], result.distance[i], result.patch[i], result.level[i]};
+  const std::vector<std::size_t> moved = untangle(result, points, index, candidate, threads);
+  if (moved.empty()) return {};
+  std::vector<char> marked(n, 0);
+  for (std::size_t i : moved) {
+    marked[i] = 1;
+    const int leaf = result.leaf_at(result.u[i], result.v[i]);
+    result.patch[i] = leaf;
+    result.level[i] = static_cast<std::int8_t>(result.patches[leaf].level);
+    result.distance[i] = (result.evaluate(result.u[i], result.v[i]) - points[i]).norm();
+  }
+  Repair out;
+  out.refitted = refit_repaired_leaves(result, points, outlier, marked, threads);
+  // A moved point whose leaf kept its surface (its refit would have moved the surface away
+  // from most of the leaf's points) goes back: only a refit brings the surface to it.
+  std::vector<char> refitted(result.patches.size(), 0);
+  for (int id : out.refitted) refitted[static_cast<std::size_t>(id)] = 1;
+  for (std::size_t i : moved) {
+    if (refitted[static_cast<std::size_t>(result.leaf_at(result.u[i], result.v[i]))]) {
+      ++out.repaired;
+      if (!result.repaired[i]) ++result.repaired_points;
+      result.repaired[i] = 1;
+      continue;
+    }
+    const Placement& p = before[i];
+    result.u[i] = p.u;
+    result.v[i] = p.v;
+    result.patch[i] = p.patch;
+    result.level[i] = p.level;
+    result.distance[i] = refitted[static_cast<std::size_t>(result.leaf_at(p.u, p.v))] ? (result.evaluate(p.u, p.v) - points[i]).norm() : p.distance;
   }
   return out;
 }

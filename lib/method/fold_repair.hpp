@@ -14,6 +14,9 @@
 // comes to the points it had missed, and every point of those leaves gets the distance of
 // the refitted surface at its (u,v), patch and level of the leaf there.
 //
+// After the driver has chosen a reach, untangle_repaired straightens the (u,v) of the repaired
+// regions at the scale of single points (untangle.hpp), which the fold measure does not see.
+//
 // "Far" is more than kRepairFactor times the accuracy target used (which the noise floor keeps
 // above the noise, so a noisy cloud's points are not taken for unreached ones) and more than
 // kRepairSpacings cloud spacings. A far point that stands alone (a gross outlier) is neither
@@ -90,5 +93,15 @@ bool repair_has_work(const Result& result, const std::vector<char>& suspect);
 /// far outside the body (result.outside_body) are neither repaired nor data of a refit.
 /// Deterministic for any thread count.
 Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::vector<char>& suspect, int threads);
+
+/// After the repair: untangles (untangle.hpp) the (u,v) of the repaired points and of the
+/// ring of their kRepairNeighbours nearest points, then refits the leaves the moved points
+/// land on, as repair_folds does; a moved point whose leaf keeps its surface goes back (on
+/// the 10,000-point fingers a moved tip point made its leaf's refit fail, and the fill's
+/// points there went back to their crushed feet: 9 -> 73 folded reference triangles).
+/// Moved points are flagged repaired and counted in result.repaired_points; the returned
+/// `repaired` counts them, `refitted` the leaves refitted. Nothing when no point is repaired.
+/// Deterministic for any thread count.
+Repair untangle_repaired(Result& result, const std::vector<Vec3>& points, int threads);
 
 }  // namespace dbs

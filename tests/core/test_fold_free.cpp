@@ -268,7 +268,8 @@ void sphere_cap_against_the_meshless_reference(void**) {
   // near the corners, where the small rim's corners pinch the map (one patch folds the same).
   // 330 degrees (a head open only at its neck): no warm-up wrapped it (mean distance
   // 0.15-0.17 after the repair had filled nearly every point, 0.17-9.9% folded); since the
-  // root starts from the meshless seed there, 7, 17, 13 and 12 against 8, 17, 16 and 14.
+  // root starts from the meshless seed there, 7, 17, 11 and 12 against 8, 17, 16 and 14 (13
+  // at 1.5 times the points before the repaired regions were untangled).
   // Asserted: at most 0.25% at every density (the meshless method folds up to 0.20%), and no
   // more than the meshless method over the four together.
   for (const char* name : {"sphere-cap", "sphere-cap-300", "sphere-cap-330"}) {
@@ -319,15 +320,16 @@ void repair_at_scan_density(void**) {
   // The two hardest shapes at 2.5 times the points (about 10,000, the size of the scans the
   // fold-free work is judged on), where the surfaces come close to more of the cloud but
   // pleat between leaves and scatter the points of steep walls in (u,v). Today: mushroom
-  // 0.49% folded (0.45% before the warm-up grid and the seams' departure guard, 0.67% before
-  // the wide reaches, 4.32% without the repair), tall dome 1.14% (1.33%, 1.55%, 5.28%); the
+  // 0.29% folded (0.49% before the repaired regions were untangled, 0.45% before the warm-up
+  // grid and the seams' departure guard, 0.67% before the wide reaches, 4.32% without the
+  // repair), tall dome 0.53% (1.14%, 1.33%, 1.55%, 5.28%); the
   // repair must keep at least half of them off and not raise the mean distance above the one
   // without it. The fingers, whose tips the harmonic fill crushed (2.25%), are at 0.05%
   // (0.10% before the warm-up grid, 0.58% with the narrow reach alone).
   const struct {
     const char* name;
     double max_share;
-  } bounds[] = {{"mushroom", 0.006}, {"tall-dome", 0.014}, {"fingers", 0.001}};
+  } bounds[] = {{"mushroom", 0.0035}, {"tall-dome", 0.0065}, {"fingers", 0.001}};
   dbs::Options without;
   without.repair = 0;
   for (const auto& b : bounds) {
