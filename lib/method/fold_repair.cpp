@@ -396,27 +396,34 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
 
 Repair untangle_repaired(Result& result, const std::vector<Vec3>& points, int threads) {
   const std::size_t n = points.size();
-  if (result.repaired.size() != n || std::none_of(result.repaired.begin(), result.repaired.end(), [](char r) { return r != 0; })) return {};
+  if (result.repaired.size() != n) return {};
+  std::vector<std::size_t> repaired;
+  for (std::size_t i = 0; i < n; ++i)
+    if (result.repaired[i]) repaired.push_back(i);
+  if (repaired.empty()) return {};
   const CloudIndex index(points);
   const std::vector<char> outlier = left_out_or_isolated(result, points, index, far_from_surface(result), threads);
-  // The repaired points and the ring of their nearest points.
-  std::vector<std::vector<std::size_t>> rings(n);
-  parallel_for(n, threads, [&](std::size_t i) {
-    if (!result.repaired[i]) return;
+  // The repaired points and the ring of their nearest points; never a point clamped onto the
+  // domain's edge (the boundary does not reach it, see far_from_surface).
+  std::vector<std::vector<std::size_t>> rings(repaired.size());
+  parallel_for(repaired.size(), threads, [&](std::size_t k) {
     std::vector<double> d2;
-    index.knn(points[i], kRepairNeighbours + 1, rings[i], d2);
+    index.knn(points[repaired[k]], kRepairNeighbours + 1, rings[k], d2);
   });
+  auto clamped = [&](std::size_t i) { return i < result.clamped.size() && result.clamped[i]; };
   std::vector<char> candidate(n, 0);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t m : rings[i]) candidate[m] = !outlier[m];
+  for (const std::vector<std::size_t>& ring : rings)
+    for (std::size_t m : ring) candidate[m] = !outlier[m] && !clamped(m);
+  rings = {};
   struct Placement {
+    std::size_t i;
     double u, v, distance;
     int patch;
     std::int8_t level;
   };
-  std::vector<Placement> before(n);
+  std::vector<Placement> before;  // of the candidates, in increasing index order
   for (std::size_t i = 0; i < n; ++i)
-    if (candidate[i]) before[i] = {result.u[i], result.v[i], result.distance[i], result.patch[i], result.level[i]};
+    if (candidate[i]) before.push_back({i, result.u[i], result.v[i], result.distance[i], result.patch[i], result.level[i]});
   const std::vector<std::size_t> moved = untangle(result, points, index, candidate, threads);
   if (moved.empty()) return {};
   std::vector<char> marked(n, 0);
@@ -440,7 +447,7 @@ Repair untangle_repaired(Result& result, const std::vector<Vec3>& points, int th
       result.repaired[i] = 1;
       continue;
     }
-    const Placement& p = before[i];
+    const Placement& p = *std::lower_bound(before.begin(), before.end(), i, [](const Placement& a, std::size_t b) { return a.i < b; });
     result.u[i] = p.u;
     result.v[i] = p.v;
     result.patch[i] = p.patch;

@@ -96,9 +96,10 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
 
 /// After the repair: untangles (untangle.hpp) the (u,v) of the repaired points and of the
 /// ring of their kRepairNeighbours nearest points, then refits the leaves the moved points
-/// land on, as repair_folds does; a moved point whose leaf keeps its surface goes back (on
-/// the 10,000-point fingers a moved tip point made its leaf's refit fail, and the fill's
-/// points there went back to their crushed feet: 9 -> 73 folded reference triangles).
+/// land on, as repair_folds does; a moved point whose leaf keeps its surface goes back, and
+/// only it: the repair's own points stay (run inside repair_folds, before its refit, a moved
+/// tip point of the 10,000-point fingers made its leaf's refit fail and the fill's points
+/// there went back to their crushed feet: 9 -> 73 folded reference triangles).
 /// Moved points are flagged repaired and counted in result.repaired_points; the returned
 /// `repaired` counts them, `refitted` the leaves refitted. Nothing when no point is repaired.
 /// Deterministic for any thread count.

@@ -182,26 +182,27 @@ class Driver {
             best.restore(result_);
           }
         }
-        if (moved) {
-          // The chosen repair's regions untangled (fold_repair.hpp), kept only when the mean
-          // distance does not rise (the repair never raises the fit).
+        if (moved && result_.repaired_points > 0) {
+          // The chosen repair's regions untangled (fold_repair.hpp), kept only when neither
+          // the mean distance nor the points the measure doubts rise (the repair never raises
+          // the fit).
           repair_start = Clock::now();
           const RepairSnapshot tangled(result_);
           const double tangled_mean = mean_counted_distance();
-          Repair untangled = untangle_repaired(result_, points_, threads_);
+          const Repair untangled = untangle_repaired(result_, points_, threads_);
           if (!untangled.refitted.empty()) {
             const std::vector<std::vector<double>> distances = counted_distances_by_patch();
             for (int id : untangled.refitted) judge_leaf(result_.patches[static_cast<std::size_t>(id)], distances[static_cast<std::size_t>(id)]);
           }
-          if (untangled.repaired > 0 && mean_counted_distance() > tangled_mean) {
-            tangled.restore(result_);
-            untangled.repaired = 0;
-          }
           result_.stage_seconds.parameterize += seconds_since(repair_start);
           if (untangled.repaired > 0) {
             folds_start = Clock::now();
-            folds = judge_folds(judged);
+            FoldMeasure straight = judge_folds(judged);
             result_.stage_seconds.folds += seconds_since(folds_start);
+            if (mean_counted_distance() <= tangled_mean && doubted_points(straight) <= doubted_points(folds)) folds = std::move(straight);
+            else tangled.restore(result_);
+          } else if (!untangled.refitted.empty()) {
+            tangled.restore(result_);  // every moved point went back: the refits go too
           }
         }
       } else {

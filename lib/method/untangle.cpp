@@ -91,15 +91,18 @@ std::vector<std::size_t> untangle(Result& result, const std::vector<Vec3>& point
     if (candidate[i]) ids.push_back(i);
   std::vector<char> moved(points.size(), 0);
   std::vector<Proposal> proposals(ids.size());
-  for (int pass = 0; pass < kUntanglePasses; ++pass) {
+  for (int pass = 0; pass < kUntangleMaxPasses; ++pass) {
     // Every proposal reads the (u,v) the pass started from; they are applied afterwards.
     parallel_for(ids.size(), threads, [&](std::size_t k) { proposals[k] = propose(result.u, result.v, points, index, ids[k]); });
+    bool any = false;
     for (std::size_t k = 0; k < ids.size(); ++k) {
       if (!proposals[k].better) continue;
       result.u[ids[k]] = proposals[k].uv.x();
       result.v[ids[k]] = proposals[k].uv.y();
       moved[ids[k]] = 1;
+      any = true;
     }
+    if (!any) break;
   }
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < moved.size(); ++i)

@@ -320,16 +320,16 @@ void repair_at_scan_density(void**) {
   // The two hardest shapes at 2.5 times the points (about 10,000, the size of the scans the
   // fold-free work is judged on), where the surfaces come close to more of the cloud but
   // pleat between leaves and scatter the points of steep walls in (u,v). Today: mushroom
-  // 0.29% folded (0.49% before the repaired regions were untangled, 0.45% before the warm-up
+  // 0.27% folded (0.49% before the repaired regions were untangled, 0.45% before the warm-up
   // grid and the seams' departure guard, 0.67% before the wide reaches, 4.32% without the
-  // repair), tall dome 0.53% (1.14%, 1.33%, 1.55%, 5.28%); the
+  // repair), tall dome 0.46% (1.14%, 1.33%, 1.55%, 5.28%); the
   // repair must keep at least half of them off and not raise the mean distance above the one
   // without it. The fingers, whose tips the harmonic fill crushed (2.25%), are at 0.05%
   // (0.10% before the warm-up grid, 0.58% with the narrow reach alone).
   const struct {
     const char* name;
     double max_share;
-  } bounds[] = {{"mushroom", 0.0035}, {"tall-dome", 0.0065}, {"fingers", 0.001}};
+  } bounds[] = {{"mushroom", 0.0035}, {"tall-dome", 0.006}, {"fingers", 0.001}};
   dbs::Options without;
   without.repair = 0;
   for (const auto& b : bounds) {

@@ -98,10 +98,11 @@ Candidates candidates(const FoldShape& shape, const std::vector<Vec3>& points, c
 }
 
 /// The driver's last step on the chosen repair: its regions untangled (untangle_repaired),
-/// kept only when the mean distance does not rise.
+/// kept only when neither the mean distance nor the points the measure doubts rise.
 dbs::Result untangled(const dbs::Result& chosen, const std::vector<Vec3>& points) {
   dbs::Result r = chosen;
   if (dbs::untangle_repaired(r, points, 1).repaired == 0 || mean_distance(r) > mean_distance(chosen)) return chosen;
+  if (doubted(dbs::measure_folds(points, r.u, r.v, r.noise, 1)) > doubted(dbs::measure_folds(points, chosen.u, chosen.v, chosen.noise, 1))) return chosen;
   return r;
 }
 
@@ -143,7 +144,7 @@ void wide_reach_unfolds_a_feature_the_surfaces_missed(void**) {
   assert_true(same_parameters(chosen, one_thread));  // the choice does not depend on the threads
   assert_true(3 * c.folds[c.best] < 2 * c.folds[0]);
   assert_true(chosen.mean_distance <= plain.mean_distance);
-  // The untangling of the chosen repair: 96 -> 56 reference folds, no higher mean distance.
+  // The untangling of the chosen repair: 96 -> 53 reference folds, no higher mean distance.
   assert_false(same_parameters(t.expected, c.results[c.best]));
   assert_true(3 * reference_folds(shape, chosen) < 2 * c.folds[c.best]);
   assert_true(mean_distance(chosen) <= c.means[c.best]);
@@ -183,7 +184,7 @@ void choice_on_a_tall_feature(void**) {
   std::printf("tall dome x2.5: 3 wide rings: %zu reference folds, %zu doubted points\n", reference_folds(shape, crushed), crushed_doubts);
   assert_true(reference_folds(shape, crushed) > 2 * c.folds[0]);
   assert_true(crushed_doubts > c.doubts[c.best]);
-  // Its walls' thin triangles untangled: 222 -> 103 reference folds.
+  // Its walls' thin triangles untangled: 222 -> 90 reference folds.
   assert_true(2 * reference_folds(shape, chosen) < c.folds[c.best]);
   assert_true(mean_distance(chosen) <= c.means[c.best]);
 }
@@ -195,7 +196,7 @@ void no_reach_raises_the_mean_distance(void**) {
   // above the unrepaired one (0.0053 against 0.0016): the driver refuses them and keeps the
   // narrow repair (1024 reference folds to 409; it raises the mean distance too, to 0.0027:
   // with 2 levels this cloud is outside the set on which the repair was shown to lower both;
-  // untangled, 350).
+  // untangled, 337).
   const Trial t = trial("tall-dome", 2.5, 2);
   const FoldShape& shape = t.shape;
   const dbs::Result &plain = t.plain, &chosen = t.chosen;
