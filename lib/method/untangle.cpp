@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 #include "parallel.hpp"
 
@@ -20,13 +21,9 @@ struct Proposal {
   bool better = false;
 };
 
-Proposal propose(const std::vector<double>& u, const std::vector<double>& v, const std::vector<Vec3>& points, const CloudIndex& index, std::size_t i) {
-  std::vector<std::size_t> ids;
-  std::vector<double> d2;
-  index.knn(points[i], kUntangleNeighbours + 1, ids, d2);
-  std::vector<std::size_t> near;
-  for (std::size_t m = 0; m < ids.size(); ++m)
-    if (ids[m] != i && d2[m] > 0.0) near.push_back(ids[m]);
+/// Point i's proposal from the (u,v) of its neighbours `near` (its nearest points, at most
+/// kUntangleNeighbours, nearest first).
+Proposal propose(const std::vector<double>& u, const std::vector<double>& v, const std::vector<Vec3>& points, const std::vector<std::size_t>& near, std::size_t i) {
   if (near.size() < kUntangleUmbrella) return {};
   // Tangent frame by PCA of the neighbours (relative to the point).
   Vec3 mean = Vec3::Zero();
@@ -89,20 +86,50 @@ std::vector<std::size_t> untangle(Result& result, const std::vector<Vec3>& point
   std::vector<std::size_t> ids;
   for (std::size_t i = 0; i < candidate.size(); ++i)
     if (candidate[i]) ids.push_back(i);
-  std::vector<char> moved(points.size(), 0);
+  // Each candidate's neighbours, in kUntangleNeighbours slots (fewer: the rest kNone).
+  constexpr std::uint32_t kNone = ~std::uint32_t{0};
+  std::vector<std::uint32_t> neighbours(ids.size() * kUntangleNeighbours, kNone);
+  parallel_for(ids.size(), threads, [&](std::size_t k) {
+    std::vector<std::size_t> found;
+    std::vector<double> d2;
+    index.knn(points[ids[k]], kUntangleNeighbours + 1, found, d2);
+    std::size_t slot = 0;
+    for (std::size_t m = 0; m < found.size() && slot < kUntangleNeighbours; ++m)
+      if (found[m] != ids[k] && d2[m] > 0.0) neighbours[k * kUntangleNeighbours + slot++] = static_cast<std::uint32_t>(found[m]);
+  });
+  std::vector<char> moved(points.size(), 0), moved_last(points.size(), 0);
+  // A proposal depends only on the (u,v) of the point and its neighbours: after the first
+  // pass only candidates next to a point the last pass moved are proposed again (the others
+  // would propose what they did, which was no move).
+  std::vector<std::size_t> open(ids.size());
+  for (std::size_t k = 0; k < ids.size(); ++k) open[k] = k;
   std::vector<Proposal> proposals(ids.size());
-  for (int pass = 0; pass < kUntangleMaxPasses; ++pass) {
+  for (int pass = 0; pass < kUntangleMaxPasses && !open.empty(); ++pass) {
     // Every proposal reads the (u,v) the pass started from; they are applied afterwards.
-    parallel_for(ids.size(), threads, [&](std::size_t k) { proposals[k] = propose(result.u, result.v, points, index, ids[k]); });
-    bool any = false;
-    for (std::size_t k = 0; k < ids.size(); ++k) {
+    parallel_for(open.size(), threads, [&](std::size_t o) {
+      const std::size_t k = open[o];
+      std::vector<std::size_t> near;
+      for (std::size_t slot = 0; slot < kUntangleNeighbours; ++slot)
+        if (neighbours[k * kUntangleNeighbours + slot] != kNone) near.push_back(neighbours[k * kUntangleNeighbours + slot]);
+      proposals[k] = propose(result.u, result.v, points, near, ids[k]);
+    });
+    std::fill(moved_last.begin(), moved_last.end(), 0);
+    for (std::size_t k : open) {
       if (!proposals[k].better) continue;
       result.u[ids[k]] = proposals[k].uv.x();
       result.v[ids[k]] = proposals[k].uv.y();
-      moved[ids[k]] = 1;
-      any = true;
+      moved[ids[k]] = moved_last[ids[k]] = 1;
     }
-    if (!any) break;
+    std::vector<std::size_t> next;
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+      bool touched = moved_last[ids[k]] != 0;
+      for (std::size_t slot = 0; slot < kUntangleNeighbours && !touched; ++slot) {
+        const std::uint32_t m = neighbours[k * kUntangleNeighbours + slot];
+        touched = m != kNone && moved_last[m] != 0;
+      }
+      if (touched) next.push_back(k);
+    }
+    open.swap(next);
   }
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < moved.size(); ++i)

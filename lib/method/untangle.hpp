@@ -29,7 +29,7 @@ constexpr int kUntangleMaxPasses = 16;  ///< passes until none moves a point, at
 /// indexes) as described above, in passes until one moves no point (at most
 /// kUntangleMaxPasses; the tall dome at 10,201 and 12,321 points: 145 and 207 folded
 /// reference triangles after one pass, 103 and 168 after four, 90 and 135 when none moves),
-/// each judging every candidate
+/// each judging every candidate next to a point the last pass moved (all in the first)
 /// against the (u,v) the pass started from (so the result does not depend on the order or
 /// the thread count). Writes result.u and result.v of the moved points only (clamped to
 /// [0,1]^2) and returns them in increasing order.
