@@ -258,6 +258,43 @@ std::vector<char> left_out_or_isolated(const Result& result, const std::vector<V
   return outlier;
 }
 
+/// Where a point is in a result: its (u,v), distance, patch and level.
+struct Placement {
+  double u, v, distance;
+  int patch;
+  std::int8_t level;
+
+  static Placement of(const Result& result, std::size_t i) { return {result.u[i], result.v[i], result.distance[i], result.patch[i], result.level[i]}; }
+};
+
+/// Point i given (u,v): its distance to the leaf there, that leaf and its level.
+void place_on_leaf(Result& result, const std::vector<Vec3>& points, std::size_t i, const Vec2& uv) {
+  result.u[i] = uv.x();
+  result.v[i] = uv.y();
+  const int leaf = result.leaf_at(uv.x(), uv.y());
+  result.distance[i] = (result.evaluate(uv.x(), uv.y()) - points[i]).norm();
+  result.patch[i] = leaf;
+  result.level[i] = static_cast<std::int8_t>(result.patches[leaf].level);
+}
+
+/// Point i put back where it was (`before`); its distance measured again when the leaf
+/// there has been refitted meanwhile (`refitted`, a flag per patch).
+void put_back(Result& result, const std::vector<Vec3>& points, std::size_t i, const Placement& before, const std::vector<char>& refitted) {
+  result.u[i] = before.u;
+  result.v[i] = before.v;
+  result.patch[i] = before.patch;
+  result.level[i] = before.level;
+  result.distance[i] = before.distance;
+  if (refitted[static_cast<std::size_t>(result.leaf_at(before.u, before.v))]) result.distance[i] = (result.evaluate(before.u, before.v) - points[i]).norm();
+}
+
+/// A flag per patch: 1 for the leaves in `ids`.
+std::vector<char> patch_flags(const Result& result, const std::vector<int>& ids) {
+  std::vector<char> flags(result.patches.size(), 0);
+  for (int id : ids) flags[static_cast<std::size_t>(id)] = 1;
+  return flags;
+}
+
 }  // namespace
 
 std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter,
@@ -321,12 +358,8 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
   far.erase(std::remove_if(far.begin(), far.end(), [&](std::size_t i) { return outlier[i] != 0; }), far.end());
   if (far.empty()) return {};
 
-  struct Placement {
-    double u, v, distance;
-    int patch, level;
-  };
   std::vector<Placement> before(far.size());
-  for (std::size_t f = 0; f < far.size(); ++f) before[f] = {result.u[far[f]], result.v[far[f]], result.distance[far[f]], result.patch[far[f]], result.level[far[f]]};
+  for (std::size_t f = 0; f < far.size(); ++f) before[f] = Placement::of(result, far[f]);
 
   // Each far point's neighbours and their normalized inverse-distance weights.
   FillRows fill;
@@ -359,12 +392,7 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
     if (neighbours[f].empty()) continue;  // all its neighbours coincide with it: nothing to repair from
     const std::size_t i = far[f];
     ++repaired;
-    result.u[i] = moved[f].x();
-    result.v[i] = moved[f].y();
-    const int leaf = result.leaf_at(result.u[i], result.v[i]);
-    result.distance[i] = (result.evaluate(result.u[i], result.v[i]) - points[i]).norm();
-    result.patch[i] = leaf;
-    result.level[i] = static_cast<std::int8_t>(result.patches[leaf].level);
+    place_on_leaf(result, points, i, moved[f]);
     result.repaired[i] = 1;
   }
   if (repaired == 0) return {};
@@ -373,8 +401,7 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
   // A repaired point whose leaf kept its surface (its refit would have moved the surface
   // away from most of the leaf's points) goes back to its foot: without the refit the fill
   // only moves it off the surface.
-  std::vector<char> refitted(result.patches.size(), 0);
-  for (int id : out.refitted) refitted[static_cast<std::size_t>(id)] = 1;
+  const std::vector<char> refitted = patch_flags(result, out.refitted);
   for (std::size_t f = 0; f < far.size(); ++f) {
     const std::size_t i = far[f];
     if (!result.repaired[i]) continue;
@@ -383,13 +410,7 @@ Repair repair_folds(Result& result, const std::vector<Vec3>& points, const std::
       continue;
     }
     result.repaired[i] = 0;
-    result.u[i] = before[f].u;
-    result.v[i] = before[f].v;
-    result.patch[i] = before[f].patch;
-    result.level[i] = static_cast<std::int8_t>(before[f].level);
-    result.distance[i] = before[f].distance;
-    // its foot's leaf may have been refitted meanwhile
-    if (refitted[static_cast<std::size_t>(result.leaf_at(result.u[i], result.v[i]))]) result.distance[i] = (result.evaluate(result.u[i], result.v[i]) - points[i]).norm();
+    put_back(result, points, i, before[f], refitted);
   }
   return out;
 }
@@ -415,31 +436,25 @@ Repair untangle_repaired(Result& result, const std::vector<Vec3>& points, int th
   for (const std::vector<std::size_t>& ring : rings)
     for (std::size_t m : ring) candidate[m] = !outlier[m] && !clamped(m);
   rings = {};
-  struct Placement {
-    std::size_t i;
-    double u, v, distance;
-    int patch;
-    std::int8_t level;
-  };
-  std::vector<Placement> before;  // of the candidates, in increasing index order
+  std::vector<std::size_t> before_ids;  // the candidates, in increasing index order
+  std::vector<Placement> before;
   for (std::size_t i = 0; i < n; ++i)
-    if (candidate[i]) before.push_back({i, result.u[i], result.v[i], result.distance[i], result.patch[i], result.level[i]});
+    if (candidate[i]) {
+      before_ids.push_back(i);
+      before.push_back(Placement::of(result, i));
+    }
   const std::vector<std::size_t> moved = untangle(result, points, index, candidate, threads);
   if (moved.empty()) return {};
   std::vector<char> marked(n, 0);
   for (std::size_t i : moved) {
     marked[i] = 1;
-    const int leaf = result.leaf_at(result.u[i], result.v[i]);
-    result.patch[i] = leaf;
-    result.level[i] = static_cast<std::int8_t>(result.patches[leaf].level);
-    result.distance[i] = (result.evaluate(result.u[i], result.v[i]) - points[i]).norm();
+    place_on_leaf(result, points, i, Vec2(result.u[i], result.v[i]));
   }
   Repair out;
   out.refitted = refit_repaired_leaves(result, points, outlier, marked, threads);
   // A moved point whose leaf kept its surface (its refit would have moved the surface away
   // from most of the leaf's points) goes back: only a refit brings the surface to it.
-  std::vector<char> refitted(result.patches.size(), 0);
-  for (int id : out.refitted) refitted[static_cast<std::size_t>(id)] = 1;
+  const std::vector<char> refitted = patch_flags(result, out.refitted);
   for (std::size_t i : moved) {
     if (refitted[static_cast<std::size_t>(result.leaf_at(result.u[i], result.v[i]))]) {
       ++out.repaired;
@@ -447,12 +462,8 @@ Repair untangle_repaired(Result& result, const std::vector<Vec3>& points, int th
       result.repaired[i] = 1;
       continue;
     }
-    const Placement& p = *std::lower_bound(before.begin(), before.end(), i, [](const Placement& a, std::size_t b) { return a.i < b; });
-    result.u[i] = p.u;
-    result.v[i] = p.v;
-    result.patch[i] = p.patch;
-    result.level[i] = p.level;
-    result.distance[i] = refitted[static_cast<std::size_t>(result.leaf_at(p.u, p.v))] ? (result.evaluate(p.u, p.v) - points[i]).norm() : p.distance;
+    const std::size_t k = static_cast<std::size_t>(std::lower_bound(before_ids.begin(), before_ids.end(), i) - before_ids.begin());
+    put_back(result, points, i, before[k], refitted);
   }
   return out;
 }
