@@ -94,6 +94,29 @@ struct SurfaceProjector::Impl {
     return *index_;
   }
 
+  /// The samples of the four sides alone (bottom, right, top, left; each `samples` long,
+  /// along u or v), made on first use: the same bits as the grid's border (there the surface
+  /// is the boundary's own point), at a 64th of the cost of the grid and without its tree. A
+  /// descent that leaves the patch needs only these.
+  const std::array<std::vector<Vec3>, 4>& sides() const {
+    std::call_once(sided, [&] {
+      const int last = samples - 1;
+      for (int side = 0; side < 4; ++side) {
+        sides_[side].resize(static_cast<std::size_t>(samples));
+        for (int k = 0; k < samples; ++k) {
+          const double s = static_cast<double>(k) / last;
+          switch (static_cast<Side>(side)) {
+            case Side::Bottom: sides_[side][k] = surface.eval(s, 0.0); break;
+            case Side::Right: sides_[side][k] = surface.eval(1.0, s); break;
+            case Side::Top: sides_[side][k] = surface.eval(s, 1.0); break;
+            case Side::Left: sides_[side][k] = surface.eval(0.0, s); break;
+          }
+        }
+      }
+    });
+    return sides_;
+  }
+
   /// SurfaceProjector::sample_cover(). Inside a cell of a flat grid every point lies within
   /// half the cell's longer diagonal of a corner; a cubic spline over at most a quarter of
   /// the samples' sites bulges inside a cell by a small fraction of that (kCoverMargin).
@@ -155,6 +178,8 @@ struct SurfaceProjector::Impl {
   mutable std::once_flag built;
   mutable std::vector<Vec3> grid_;
   mutable std::unique_ptr<CloudIndex> index_;
+  mutable std::once_flag sided;
+  mutable std::array<std::vector<Vec3>, 4> sides_;
   mutable std::once_flag covered;
   mutable double cover_ = 0.0;
 
@@ -284,16 +309,8 @@ struct SurfaceProjector::Impl {
   /// Nearest point of the four sides: each side starts from its nearest sample; a side whose
   /// samples are all farther than the best foot found plus half a sample step cannot win.
   Iterate nearest_on_boundary(const Vec3& q) const {
-    const int last = samples - 1;
-    const std::vector<Vec3>& grid = this->grid();
-    auto sample_point = [&](Side side, int k) -> const Vec3& {
-      switch (side) {
-        case Side::Bottom: return grid[k];
-        case Side::Right: return grid[static_cast<std::size_t>(k) * samples + last];
-        case Side::Top: return grid[static_cast<std::size_t>(last) * samples + k];
-        default: return grid[static_cast<std::size_t>(k) * samples];
-      }
-    };
+    const std::array<std::vector<Vec3>, 4>& side_samples = sides();
+    auto sample_point = [&](Side side, int k) -> const Vec3& { return side_samples[static_cast<int>(side)][static_cast<std::size_t>(k)]; };
     std::array<std::pair<double, int>, 4> nearest_sample;
     for (int side = 0; side < 4; ++side) {
       nearest_sample[side] = {std::numeric_limits<double>::infinity(), 0};
