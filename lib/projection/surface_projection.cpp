@@ -20,7 +20,7 @@ constexpr int kMaxHalvings = 40;
 /// (FootPrecision::Parameters, FootPrecision::Distance).
 constexpr double kConvergedParameters = 1e-12;
 constexpr double kConvergedDistance = 1e-7;
-/// FootPrecision::Measure: a step turning back on a halved one is at most this fraction of
+/// FootPrecision::Distance and Measure: a step turning back on a halved one is at most this fraction of
 /// it (see settle_on_crease).
 constexpr double kCreaseShrink = 0.25;
 /// Steps in (u,v) shorter than this are taken without a line search (see take_step).
@@ -70,7 +70,7 @@ struct Iterate {
 struct SurfaceProjector::Impl {
   const BaseSurface& surface;
   double tolerance;
-  bool settle_creases;  // FootPrecision::Measure
+  bool settle_creases;  // FootPrecision::Distance and Measure
   int samples;
   /// Arc length of a side between two consecutive samples on it.
   std::array<double, 4> side_step;
@@ -348,7 +348,7 @@ struct SurfaceProjector::Impl {
 
 SurfaceProjector::SurfaceProjector(const BaseSurface& surface, FootPrecision precision, int samples) {
   if (samples < 2) fail(ErrorCode::InvalidArgument, "SurfaceProjector: samples = " + std::to_string(samples) + ", at least 2 needed");
-  impl_ = std::make_unique<Impl>(surface, precision == FootPrecision::Parameters ? kConvergedParameters : kConvergedDistance, precision == FootPrecision::Measure, samples);
+  impl_ = std::make_unique<Impl>(surface, precision == FootPrecision::Parameters ? kConvergedParameters : kConvergedDistance, precision != FootPrecision::Parameters, samples);
 }
 
 SurfaceProjector::~SurfaceProjector() = default;
