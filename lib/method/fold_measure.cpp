@@ -329,82 +329,149 @@ std::size_t count_coincident(const std::vector<double>& u, const std::vector<dou
   return count;
 }
 
-namespace {
+/// A cloud and what the measure finds from it alone. Clouds of extreme sizes are judged
+/// scaled by a power of two near the inverse of their size, which is exact: products of four
+/// lengths (the determinant of the tangent moments) under- or overflow for a cloud 1e-100 or
+/// 1e75 across, and the verdicts are those of the same cloud at unit size. Clouds of ordinary
+/// sizes are judged as they are.
+struct FoldNeighbourhoods::Impl {
+  const std::vector<Vec3>* points = nullptr;  // the caller's, or `scaled`
+  std::vector<Vec3> scaled;
+  double sigma = 0.0;
+  bool keep = false;  // neighbourhoods kept from one judge to the next (FoldNeighbourhoods)
+  // Null for fewer than 4 points or fewer than two distinct ones (every point undecided).
+  std::unique_ptr<CloudIndex> index;
+  std::unique_ptr<Levels> levels;
+  double radius = 0.0;
+  // Per point: the orientation graph's edges and the reach of its k nearest (found with its
+  // first neighbourhood); kept, the neighbourhood and the wider one tried when that is not
+  // surface-like.
+  std::vector<std::uint32_t> graph;
+  std::vector<double> knn_reach;
+  std::vector<char> found, retried;
+  std::vector<std::vector<std::size_t>> first, wider;
 
-FoldMeasure measure_folds_at_unit_scale(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, double noise_sigma, int threads, WorkMeter* meter);
+  Impl(const std::vector<Vec3>& cloud, double noise_sigma, bool keep_neighbourhoods) : keep(keep_neighbourhoods) {
+    if (!std::isfinite(noise_sigma)) fail(ErrorCode::NonFinite, "measure_folds: the noise level is not finite");
+    if (noise_sigma < 0.0) fail(ErrorCode::InvalidArgument, "measure_folds: the noise level " + std::to_string(noise_sigma) + " is negative");
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+      if (!is_finite(cloud[i])) fail(ErrorCode::NonFinite, "measure_folds: point " + std::to_string(i) + " is not finite");
+    points = &cloud;
+    sigma = noise_sigma;
+    const double size = bounds_of(cloud).diagonal();
+    if (size > 0.0 && (size < 0x1p-20 || size > 0x1p20)) {
+      const double scale = std::ldexp(1.0, -std::ilogb(size));
+      scaled.resize(cloud.size());
+      for (std::size_t i = 0; i < cloud.size(); ++i) scaled[i] = cloud[i] * scale;
+      points = &scaled;
+      sigma = noise_sigma * scale;
+    }
+    const std::size_t n = cloud.size();
+    if (n < 4) return;
+    index = std::make_unique<CloudIndex>(*points);
+    double spacing = 0.0;
+    try {
+      spacing = cloud_spacing(*index);
+    } catch (const Error& e) {
+      if (e.code() != ErrorCode::Degenerate) throw;
+      index.reset();  // fewer than two distinct points
+      return;
+    }
+    radius = std::max(kSpacingRadius * spacing, kNoiseRadius * sigma);
+    levels = std::make_unique<Levels>(*points, *index);
+    graph.assign(n * kGraphNeighbours, kNoNeighbour);
+    knn_reach.assign(n, 0.0);
+    found.assign(n, 0);
+    if (keep) {
+      retried.assign(n, 0);
+      first.resize(n);
+      wider.resize(n);
+    }
+  }
 
-}  // namespace
+  /// Points expected within r of point i, from its k nearest on a surface (~r^2; more in a
+  /// thick cloud).
+  double expected(std::size_t i, double r) const {
+    const double reach = knn_reach[i];
+    return reach > 0.0 ? static_cast<double>(kNeighbours) * (r / reach) * (r / reach) : 0.0;
+  }
+
+  /// Point i's neighbourhood: the k nearest, or every point within the radius when that
+  /// reaches farther. Its first search also finds the point's graph edges.
+  void neighbourhood(std::size_t i, std::vector<std::size_t>& nb, std::vector<double>& d2) {
+    if (keep && found[i]) {
+      nb = first[i];
+      return;
+    }
+    const std::vector<Vec3>& p = *points;
+    index->knn(p[i], kNeighbours, nb, d2);
+    std::size_t t = 0;
+    for (std::size_t j : nb) {  // nearest first
+      if (t == kGraphNeighbours) break;
+      if (j != i && p[j] != p[i]) graph[i * kGraphNeighbours + t++] = static_cast<std::uint32_t>(j);
+    }
+    knn_reach[i] = std::sqrt(d2.back());
+    if (radius > knn_reach[i]) levels->within(i, radius, expected(i, radius), nb);
+    found[i] = 1;
+    if (keep) first[i] = nb;
+  }
+
+  /// Point i's neighbourhood kRetryRadius x wider than its reach (one-sided at a border, or
+  /// noisy for its size).
+  void wider_neighbourhood(std::size_t i, std::vector<std::size_t>& nb) {
+    if (keep && retried[i]) {
+      nb = wider[i];
+      return;
+    }
+    const double reach = std::max(knn_reach[i], radius);
+    levels->within(i, kRetryRadius * reach, expected(i, kRetryRadius * reach), nb);
+    if (keep) wider[i] = nb, retried[i] = 1;
+  }
+
+  FoldMeasure judge(const std::vector<double>& u, const std::vector<double>& v, int threads, WorkMeter* meter);
+};
+
+FoldNeighbourhoods::FoldNeighbourhoods(const std::vector<Vec3>& points, double noise_sigma) : impl_(std::make_unique<Impl>(points, noise_sigma, true)) {}
+
+FoldNeighbourhoods::~FoldNeighbourhoods() = default;
+
+std::size_t FoldNeighbourhoods::size() const { return impl_->points->size(); }
+
+FoldMeasure FoldNeighbourhoods::judge(const std::vector<double>& u, const std::vector<double>& v, int threads, WorkMeter* meter) { return impl_->judge(u, v, threads, meter); }
 
 FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, double noise_sigma, int threads, WorkMeter* meter) {
   check_sizes(points.size(), u, v, "measure_folds");
-  if (!std::isfinite(noise_sigma)) fail(ErrorCode::NonFinite, "measure_folds: the noise level is not finite");
-  if (noise_sigma < 0.0) fail(ErrorCode::InvalidArgument, "measure_folds: the noise level " + std::to_string(noise_sigma) + " is negative");
-  const std::size_t n = points.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!is_finite(points[i])) fail(ErrorCode::NonFinite, "measure_folds: point " + std::to_string(i) + " is not finite");
-    if (!std::isfinite(u[i]) || !std::isfinite(v[i])) fail(ErrorCode::NonFinite, "measure_folds: the (u,v) of point " + std::to_string(i) + " is not finite");
-  }
-  // Products of four lengths (the determinant of the tangent moments) under- or overflow for
-  // a cloud 1e-100 or 1e75 across: such a cloud is judged scaled by a power of two near the
-  // inverse of its size, which is exact, so the verdicts are those of the same cloud at unit
-  // size. Clouds of ordinary sizes are judged as they are.
-  const double size = bounds_of(points).diagonal();
-  if (!(size > 0.0) || (size >= 0x1p-20 && size <= 0x1p20)) return measure_folds_at_unit_scale(points, u, v, noise_sigma, threads, meter);
-  const double scale = std::ldexp(1.0, -std::ilogb(size));
-  std::vector<Vec3> scaled(points.size());
-  for (std::size_t i = 0; i < n; ++i) scaled[i] = points[i] * scale;
-  return measure_folds_at_unit_scale(scaled, u, v, noise_sigma * scale, threads, meter);
+  return FoldNeighbourhoods::Impl(points, noise_sigma, false).judge(u, v, threads, meter);
 }
 
-namespace {
-
-FoldMeasure measure_folds_at_unit_scale(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, double noise_sigma, int threads, WorkMeter* meter) {
-  const std::size_t n = points.size();
+FoldMeasure FoldNeighbourhoods::Impl::judge(const std::vector<double>& u, const std::vector<double>& v, int threads, WorkMeter* meter) {
+  const std::vector<Vec3>& p = *points;
+  const std::size_t n = p.size();
+  check_sizes(n, u, v, "measure_folds");
+  for (std::size_t i = 0; i < n; ++i)
+    if (!std::isfinite(u[i]) || !std::isfinite(v[i])) fail(ErrorCode::NonFinite, "measure_folds: the (u,v) of point " + std::to_string(i) + " is not finite");
 
   FoldMeasure m;
   m.points = n;
   m.state.assign(n, kFoldUndecided);
   m.coincident = count_coincident(u, v);
   m.undecided = n;
-  if (n < 4) return m;
-
-  const CloudIndex index(points);
-  double spacing = 0.0;
-  try {
-    spacing = cloud_spacing(index);
-  } catch (const Error& e) {
-    if (e.code() != ErrorCode::Degenerate) throw;
-    return m;  // fewer than two distinct points
-  }
-  const double radius = std::max(kSpacingRadius * spacing, kNoiseRadius * noise_sigma);
+  if (!index) return m;
   const int workers = resolve_threads(threads);
 
-  // 1. Local frames and signs, and the orientation graph's edges (each point's nearest).
+  // 1. Local frames and signs (the orientation graph's edges come with the neighbourhoods).
   std::vector<Local> local(n);
-  std::vector<std::uint32_t> graph(n * kGraphNeighbours, kNoNeighbour);
-  const Levels levels(points, index);
   const std::size_t chunks = std::min<std::size_t>(static_cast<std::size_t>(workers), n);
   metered_for(meter, chunks, workers, [&](std::size_t c) {
     std::vector<std::size_t> nb;
     std::vector<double> d2, ratios;
     std::vector<Neighbour> near;
     for (std::size_t i = n * c / chunks; i < n * (c + 1) / chunks; ++i) {
-      index.knn(points[i], kNeighbours, nb, d2);
-      std::size_t t = 0;
-      for (std::size_t j : nb) {  // nearest first
-        if (t == kGraphNeighbours) break;
-        if (j != i && points[j] != points[i]) graph[i * kGraphNeighbours + t++] = static_cast<std::uint32_t>(j);
-      }
-      // The k nearest, or every point within the radius when that reaches farther.
-      const double knn_reach = std::sqrt(d2.back()), reach = std::max(knn_reach, radius);
-      // Points expected within r, from the k nearest on a surface (~r^2; more in a thick cloud).
-      auto expected = [&](double r) { return knn_reach > 0.0 ? static_cast<double>(kNeighbours) * (r / knn_reach) * (r / knn_reach) : 0.0; };
-      if (radius > knn_reach) levels.within(i, radius, expected(radius), nb);
-      local[i] = analyse(points, u, v, i, nb, near, ratios);
-      if (!local[i].surface_like && reach > 0.0) {
-        // One-sided (at a border) or noisy for its size: once more over kRetryRadius x the reach.
-        levels.within(i, kRetryRadius * reach, expected(kRetryRadius * reach), nb);
-        local[i] = analyse(points, u, v, i, nb, near, ratios);
+      neighbourhood(i, nb, d2);
+      local[i] = analyse(p, u, v, i, nb, near, ratios);
+      if (!local[i].surface_like && std::max(knn_reach[i], radius) > 0.0) {
+        wider_neighbourhood(i, nb);
+        local[i] = analyse(p, u, v, i, nb, near, ratios);
       }
       count_work(meter);
     }
@@ -428,7 +495,7 @@ FoldMeasure measure_folds_at_unit_scale(const std::vector<Vec3>& points, const s
   std::vector<std::int8_t> orientation;
   std::vector<std::uint32_t> component;
   std::uint32_t components = 0;
-  orient(points, u, v, local, graph, orientation, component, components);
+  orient(p, u, v, local, graph, orientation, component, components);
   std::vector<std::int64_t> balance(components, 0);
   for (std::size_t i = 0; i < n; ++i)
     if (local[i].sign != 0 && orientation[i] != 0) balance[component[i]] += local[i].sign * orientation[i];
@@ -451,8 +518,6 @@ FoldMeasure measure_folds_at_unit_scale(const std::vector<Vec3>& points, const s
   m.folded_share = decided == 0 ? 0.0 : static_cast<double>(m.folded) / static_cast<double>(decided);
   return m;
 }
-
-}  // namespace
 
 std::vector<std::int8_t> spread_verdicts(const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter) {
   if (judged.size() != state.size() || judged.empty())

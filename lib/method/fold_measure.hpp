@@ -34,6 +34,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "geometry.hpp"
@@ -88,6 +89,31 @@ struct FoldMeasure {
 /// Throws Error(InvalidArgument) when the sizes differ or noise_sigma < 0, Error(NonFinite) for
 /// a non-finite point, parameter or sigma. Fewer than 4 distinct points: all undecided.
 FoldMeasure measure_folds(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, double noise_sigma, int threads, WorkMeter* meter = nullptr);
+
+/// What measure_folds finds from the cloud alone (its index, spacing, thinned levels, the
+/// orientation graph's edges and each point's neighbourhood), kept for judging several
+/// parameterizations of the same points: the repair judges its candidates one after the
+/// other, and the cloud is searched once for all of them. Each point's neighbourhood is
+/// found the first time the point is judged; judge() gives the verdicts of measure_folds
+/// bit for bit. `points` must outlive the object. judge() may not run concurrently with
+/// itself on one object (it fills the neighbourhoods); it is otherwise as measure_folds.
+class FoldNeighbourhoods {
+ public:
+  /// Throws as measure_folds for a non-finite point or a noise level not finite or negative.
+  FoldNeighbourhoods(const std::vector<Vec3>& points, double noise_sigma);
+  ~FoldNeighbourhoods();
+  FoldNeighbourhoods(const FoldNeighbourhoods&) = delete;
+  FoldNeighbourhoods& operator=(const FoldNeighbourhoods&) = delete;
+
+  std::size_t size() const;
+  /// measure_folds(points, u, v, noise_sigma, threads, meter) of the constructor's points.
+  FoldMeasure judge(const std::vector<double>& u, const std::vector<double>& v, int threads, WorkMeter* meter = nullptr);
+
+ private:
+  struct Impl;
+  friend FoldMeasure measure_folds(const std::vector<Vec3>&, const std::vector<double>&, const std::vector<double>&, double, int, WorkMeter*);
+  std::unique_ptr<Impl> impl_;
+};
 
 /// The verdicts of measure_folds on the points `judged` (indices into `points`, distinct,
 /// `state` one per judged point) spread over every point: each takes the verdict of the

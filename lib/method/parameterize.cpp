@@ -377,22 +377,28 @@ class Driver {
   /// The fold measure of the result on at most kFoldJudgedPoints points, evenly strided over
   /// the input order (a sparser cloud of the same surface: the measure sizes its
   /// neighbourhoods from the spacing), so that it costs a bounded share of a large run.
+  /// The points judged and their neighbourhoods are the same for every judge of one run
+  /// (the repair moves only (u,v)): found by the first, kept for the others.
   FoldMeasure judge_folds(std::vector<std::size_t>& judged) {
     // Of the kept points only: `judged` lists them, left empty when they are all the points.
     const PointList& body = kept_;
     const std::size_t n = body.size(), count = std::min(n, kFoldJudgedPoints);
     judged.clear();
-    if (n == points_.size() && n <= kFoldJudgedPoints) return measure_folds(points_, result_.u, result_.v, result_.noise, threads_, &meter_);
-    std::vector<Vec3> points;
+    const bool all = n == points_.size() && n <= kFoldJudgedPoints;
+    if (!judged_neighbourhoods_) {
+      if (!all)
+        for (std::size_t k = 0; k < count; ++k) judged_points_.push_back(points_[body[static_cast<std::size_t>(static_cast<unsigned long long>(k) * n / count)]]);
+      judged_neighbourhoods_ = std::make_unique<FoldNeighbourhoods>(all ? points_ : judged_points_, result_.noise);
+    }
+    if (all) return judged_neighbourhoods_->judge(result_.u, result_.v, threads_, &meter_);
     std::vector<double> u, v;
     for (std::size_t k = 0; k < count; ++k) {
       const std::size_t i = body[static_cast<std::size_t>(static_cast<unsigned long long>(k) * n / count)];
       judged.push_back(i);
-      points.push_back(points_[i]);
       u.push_back(result_.u[i]);
       v.push_back(result_.v[i]);
     }
-    return measure_folds(points, u, v, result_.noise, threads_, &meter_);
+    return judged_neighbourhoods_->judge(u, v, threads_, &meter_);
   }
 
   /// Algorithm A2, seam-aware: each point is projected onto every leaf whose subcloud holds
@@ -722,6 +728,8 @@ class Driver {
   Progress progress_;
   WorkMeter meter_;
   std::unique_ptr<CloudIndex> cloud_index_;  // the whole cloud's, until the root is split
+  std::vector<Vec3> judged_points_;          // judge_folds' points when they are not all of them ...
+  std::unique_ptr<FoldNeighbourhoods> judged_neighbourhoods_;  // ... and their neighbourhoods
   const char* stage_ = "index";
   double stage_begin_ = 0.0, stage_end_ = 0.0;
   std::uint64_t stage_units_start_ = 0, stage_units_expected_ = 1;

@@ -333,6 +333,70 @@ void invariant_to_threads(void**) {
   assert_true(one.folded_share == three.folded_share);
 }
 
+void same(const FoldMeasure& a, const FoldMeasure& b) {
+  assert_true(a.state == b.state);
+  assert_int_equal(a.folded, b.folded);
+  assert_int_equal(a.undecided, b.undecided);
+  assert_int_equal(a.collapsed, b.collapsed);
+  assert_int_equal(a.coincident, b.coincident);
+  assert_true(a.folded_share == b.folded_share);
+}
+
+void kept_neighbourhoods_judge_as_a_fresh_measure(void**) {
+  // One FoldNeighbourhoods judging several parameterizations of the same points, as the repair
+  // does, in an order where the later ones reuse neighbourhoods (and wider retries, at the
+  // cloud's border) found for the earlier: every verdict is that of a fresh measure_folds.
+  for (int noisy = 0; noisy < 2; ++noisy) {
+    Flipped f = flipped_patch();
+    const double sigma = noisy ? 0.002 : 0.0;
+    if (noisy) add_normal_noise(f.c, height_field(), sigma, 22);
+    const std::vector<double> plain_u = f.c.u;
+    std::vector<double> mirrored_u = f.c.u, scrambled_u = f.c.u;
+    for (double& u : mirrored_u) u = 1.0 - u;
+    std::mt19937_64 rng(23);
+    std::shuffle(scrambled_u.begin(), scrambled_u.begin() + 400, rng);
+    FoldNeighbourhoods kept(f.c.points, sigma);
+    assert_int_equal(kept.size(), f.c.points.size());
+    std::size_t folded = 0;
+    for (const std::vector<double>* u : std::initializer_list<const std::vector<double>*>{&plain_u, &mirrored_u, &scrambled_u, &plain_u}) {
+      const FoldMeasure fresh = measure_folds(f.c.points, *u, f.c.v, sigma, 2);
+      same(kept.judge(*u, f.c.v, 2), fresh);
+      same(kept.judge(*u, f.c.v, 1), fresh);
+      folded += fresh.folded;
+    }
+    assert_true(folded > 0);
+  }
+  // A cloud judged scaled (1e30 across) and a tiny one, through the kept neighbourhoods too.
+  Flipped f = flipped_patch();
+  for (double factor : {1e30, 1e-30}) {
+    std::vector<Vec3> scaled;
+    for (const Vec3& p : f.c.points) scaled.push_back(p * factor);
+    FoldNeighbourhoods kept(scaled, 0.0);
+    same(kept.judge(f.c.u, f.c.v, 2), measure_folds(f.c.points, f.c.u, f.c.v, 0.0, 2));
+  }
+  // Bad parameters are refused by judge as by measure_folds, and the object stays usable.
+  FoldNeighbourhoods kept(f.c.points, 0.0);
+  std::vector<double> bad_v = f.c.v, short_v(f.c.v.begin(), f.c.v.end() - 1);
+  bad_v[3] = NAN;
+  for (const std::vector<double>* v : {&bad_v, &short_v}) {
+    int code = -1;
+    try {
+      kept.judge(f.c.u, *v, 2);
+    } catch (const Error& e) {
+      code = static_cast<int>(e.code());
+    }
+    assert_int_equal(code, static_cast<int>(v == &bad_v ? ErrorCode::NonFinite : ErrorCode::InvalidArgument));
+  }
+  same(kept.judge(f.c.u, f.c.v, 2), measure_folds(f.c.points, f.c.u, f.c.v, 0.0, 2));
+  int code = -1;
+  try {
+    FoldNeighbourhoods negative(f.c.points, -1.0);
+  } catch (const Error& e) {
+    code = static_cast<int>(e.code());
+  }
+  assert_int_equal(code, static_cast<int>(ErrorCode::InvalidArgument));
+}
+
 int error_code(const std::vector<Vec3>& p, const std::vector<double>& u, const std::vector<double>& v, double sigma) {
   try {
     measure_folds(p, u, v, sigma, 1);
@@ -398,6 +462,7 @@ int main() {
       cmocka_unit_test(coincident_count_is_exact),
       cmocka_unit_test(invariant_to_scale),
       cmocka_unit_test(invariant_to_threads),
+      cmocka_unit_test(kept_neighbourhoods_judge_as_a_fresh_measure),
       cmocka_unit_test(bad_input_is_refused),
       cmocka_unit_test(tiny_inputs_are_undecided),
   };
