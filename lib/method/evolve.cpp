@@ -1,7 +1,9 @@
 #include "evolve.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 
 #include "grid_projection.hpp"
 #include "meshless_seed.hpp"
@@ -22,6 +24,10 @@ constexpr std::size_t kPilotPoints = 512;
 /// that misjudges (its points hold several times their share of far points) costs a grid
 /// one growth more, never a target reported met that is not.
 constexpr double kPilotMargin = 3.0;
+
+/// measure_distances with a bound to stop above: the rounds, every kStopRounds[r]-th point of
+/// the sample not measured yet (a sample smaller than the first is measured whole).
+constexpr std::array<std::size_t, 5> kStopRounds{{16, 8, 4, 2, 1}};
 
 /// The smallest grid that moves a node (3 x 3: one interior node).
 constexpr int kMinWarmUpGrid = 3;
@@ -63,15 +69,17 @@ void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& poin
 }
 
 void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3>& points, const PointList& indices, std::size_t stride, int threads, double& out_mean,
-                       double& out_max, LossKind loss, double loss_scale, double* out_loss_mean, WorkMeter* meter, std::vector<Vec2>* feet, std::size_t feet_step) {
+                       double& out_max, LossKind loss, double loss_scale, double* out_loss_mean, WorkMeter* meter, std::vector<Vec2>* feet, std::size_t feet_step,
+                       double stop_above, bool* out_stopped) {
   stride = std::max<std::size_t>(stride, 1);
   const std::size_t count = (indices.size() + stride - 1) / stride;
   out_mean = 0.0;
   out_max = 0.0;
   if (out_loss_mean) *out_loss_mean = 0.0;
+  if (out_stopped) *out_stopped = false;
   if (count == 0) return;
   std::vector<double> distance(count);
-  metered_for(meter, count, threads, [&](std::size_t k) {
+  auto measure = [&](std::size_t k) {
     const Vec3& q = points[indices[k * stride]];
     if (feet) {
       // Each point writes only its own foot.
@@ -83,7 +91,42 @@ void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3
       distance[k] = projector.project(q).distance;
     }
     count_work(meter);
-  });
+  };
+  auto error_of = [&](double d) { return out_loss_mean ? robust_distance(loss, loss_scale, d) : d; };
+  if (std::isfinite(stop_above) && count >= kStopRounds.back()) {
+    // In rounds over the sample interleaved (every kStopRounds[0]-th point first, then the
+    // ones halfway between, ...), each spread over the whole patch; the errors are never
+    // negative, so once the measured ones sum above stop_above x count the mean is above
+    // stop_above whatever the others are, and they are left unmeasured. The rounds do not
+    // depend on the thread count.
+    std::vector<char> measured(count, 0);
+    for (std::size_t step : kStopRounds) {
+      std::vector<std::size_t> round;
+      for (std::size_t k = 0; k < count; k += step)
+        if (!measured[k]) round.push_back(k), measured[k] = 1;
+      metered_for(meter, round.size(), threads, [&](std::size_t r) { measure(round[r]); });
+      if (step == 1) break;
+      double sum = 0.0;
+      for (std::size_t k = 0; k < count; ++k)
+        if (measured[k]) sum += error_of(distance[k]);
+      if (sum > stop_above * static_cast<double>(count)) {
+        // Lower bounds: the unmeasured points count as 0.
+        double distance_sum = 0.0, loss_sum = 0.0;
+        for (std::size_t k = 0; k < count; ++k)
+          if (measured[k]) {
+            distance_sum += distance[k];
+            if (out_loss_mean) loss_sum += robust_distance(loss, loss_scale, distance[k]);
+            out_max = std::max(out_max, distance[k]);
+          }
+        out_mean = distance_sum / static_cast<double>(count);
+        if (out_loss_mean) *out_loss_mean = loss_sum / static_cast<double>(count);
+        if (out_stopped) *out_stopped = true;
+        return;
+      }
+    }
+  } else {
+    metered_for(meter, count, threads, measure);
+  }
   // Summed serially in index order so the result does not depend on the thread count.
   double sum = 0.0, loss_sum = 0.0;
   for (double d : distance) {
@@ -134,8 +177,10 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
         continue;
       }
     }
+    // A grid that can still grow needs only to know whether it met the target: its
+    // measurement stops once it is certainly above it.
     measure_distances(surface_projector, points, patch.subcloud, stride, settings.threads, mean, max, settings.error_loss, settings.error_loss_scale, robust ? &loss_mean : nullptr,
-                      settings.meter, &feet, 1);
+                      settings.meter, &feet, 1, grid < settings.max_grid ? settings.accuracy : std::numeric_limits<double>::infinity());
     error = robust ? loss_mean : mean;
     if (tick) tick(grid);
     if (error <= settings.accuracy || grid >= settings.max_grid) break;

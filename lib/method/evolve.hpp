@@ -3,6 +3,7 @@
 // subcloud, and grow the grid by one row and one column until the target is met or the grid
 // reaches its maximum size.
 #pragma once
+#include <limits>
 #include <functional>
 #include <vector>
 
@@ -83,9 +84,13 @@ void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& poin
 /// The same with a projector onto the surface (FootPrecision::Distance or Measure), built once for
 /// several measurements of one surface. With `feet`, the k-th point measured starts its descent
 /// from (*feet)[k * feet_step] (from the nearest sample where that is NaN) and leaves its foot
-/// there.
+/// there. With a finite `stop_above`, the measurement stops as soon as the error (the mean
+/// distance, or the loss's mean when out_loss_mean is given) is certainly above it: the
+/// figures are then lower bounds (the points left unmeasured count as 0, their feet stay as
+/// they were) and `out_stopped`, when given, is set; the figures of a measurement that did not
+/// stop are those of one without the bound.
 void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3>& points, const PointList& indices, std::size_t stride, int threads, double& out_mean,
                        double& out_max, LossKind loss = LossKind::None, double loss_scale = 0.0, double* out_loss_mean = nullptr, WorkMeter* meter = nullptr,
-                       std::vector<Vec2>* feet = nullptr, std::size_t feet_step = 1);
+                       std::vector<Vec2>* feet = nullptr, std::size_t feet_step = 1, double stop_above = std::numeric_limits<double>::infinity(), bool* out_stopped = nullptr);
 
 }  // namespace dbs
