@@ -56,6 +56,10 @@ constexpr std::size_t kFoldJudgedPoints = 20000;
 // A patch with fewer points than this is not subdivided: its children would have too few
 // points to carry a grid.
 constexpr std::size_t kMinPointsToSubdivide = 64;
+/// Leaves projected together, each on one thread, while their subclouds hold at most this
+/// many points in all: their feet are kept (56 bytes a point) until merged in leaf order. A
+/// larger leaf is projected alone, its points on all threads.
+constexpr std::size_t kLeafBatchPoints = 65536;
 
 using Clock = std::chrono::steady_clock;
 
@@ -325,14 +329,12 @@ class Driver {
     // The points' parameters are made with the first leaves: while the upper levels run, the
     // indices of their patches are alive, and both together would set the peak of the run.
     if (result_.u.empty() && split.size() < ids.size()) start_parameters();
-    std::size_t next_split = 0;
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-      if (next_split < split.size() && static_cast<std::size_t>(split[next_split]) == k) {
-        ++next_split;
-        continue;
-      }
-      project_leaf(result_.patches[ids[k]]);
+    std::vector<int> leaves;
+    for (std::size_t k = 0, next_split = 0; k < ids.size(); ++k) {
+      if (next_split < split.size() && static_cast<std::size_t>(split[next_split]) == k) ++next_split;
+      else leaves.push_back(ids[k]);
     }
+    project_leaves(leaves);
     result_.stage_seconds.parameterize += seconds_since(leaves_start);
 
     std::vector<int> next;
@@ -436,6 +438,44 @@ class Driver {
       meter_.add();
     });
     judge_leaf(leaf, distance);
+  }
+
+  /// project_leaf for each of `ids` (leaves, in id order). The many small leaves of a deep
+  /// quadtree are projected several at once, one thread each (a leaf's own points are too few
+  /// to share among threads, and its projector's samples are made on one): their feet are
+  /// kept and then offered to consider() leaf after leaf, in the order project_leaf would, so a
+  /// point two leaves hold gets the same foot for every thread count.
+  void project_leaves(const std::vector<int>& ids) {
+    std::size_t first = 0;
+    while (first < ids.size()) {
+      std::size_t end = first, batch_points = 0;
+      while (end < ids.size() && batch_points + result_.patches[ids[end]].subcloud.size() <= kLeafBatchPoints) batch_points += result_.patches[ids[end++]].subcloud.size();
+      if (threads_ == 1 || end - first < 2) {
+        project_leaf(result_.patches[ids[first++]]);
+        continue;
+      }
+      std::vector<std::vector<Foot>> feet(end - first);
+      meter_.run(end - first, threads_, [&](std::size_t b) {
+        const Patch& leaf = result_.patches[ids[first + b]];
+        SurfaceProjector projector(leaf.surface);
+        projector.prepare(leaf.subcloud.size());
+        feet[b].reserve(leaf.subcloud.size());
+        for (std::uint32_t i : leaf.subcloud) {
+          feet[b].push_back(projector.project(points_[i]));
+          meter_.add();
+        }
+      });
+      for (std::size_t b = 0; b < feet.size(); ++b) {
+        Patch& leaf = result_.patches[ids[first + b]];
+        std::vector<double> distance(feet[b].size());
+        for (std::size_t k = 0; k < feet[b].size(); ++k) {
+          distance[k] = feet[b][k].distance;
+          consider(leaf.subcloud[k], leaf, feet[b][k]);
+        }
+        judge_leaf(leaf, distance);
+      }
+      first = end;
+    }
   }
 
   /// A leaf's mean and max distance over `distance` and whether it met the target. Summed in

@@ -342,6 +342,34 @@ void repair_at_scan_density(void**) {
   }
 }
 
+/// Every point's parameters, distance, leaf and level, and every patch's figures, bit for bit.
+bool same_for_every_thread_count(const dbs::Result& a, const dbs::Result& b) {
+  if (!(a.u == b.u && a.v == b.v && a.distance == b.distance && a.patch == b.patch && a.level == b.level)) return false;
+  if (a.folded_points != b.folded_points || a.patches.size() != b.patches.size()) return false;
+  for (std::size_t k = 0; k < a.patches.size(); ++k) {
+    const dbs::Patch &p = a.patches[k], &q = b.patches[k];
+    if (!(p.mean_distance == q.mean_distance && p.max_distance == q.max_distance && p.error == q.error && p.accurate == q.accurate && p.subcloud == q.subcloud)) return false;
+  }
+  return a.mean_distance == b.mean_distance;
+}
+
+/// The mushroom's 76 leaves are projected several at once on more than one thread, their
+/// feet merged in leaf order (a point two leaves hold keeps the foot one thread gives it).
+void many_leaves_are_the_same_for_every_thread_count(void**) {
+  const FoldShape shape = dbs_folds::fold_shape("mushroom");
+  dbs::Options one, two, three;
+  one.threads = 1;
+  two.threads = 2;
+  three.threads = 3;
+  const Run a = run(shape, one), b = run(shape, two), c = run(shape, three);
+  std::size_t leaves = 0;
+  for (const dbs::Patch& p : a.result.patches) leaves += p.is_leaf() ? 1 : 0;
+  std::printf("mushroom: %zu patches, %zu leaves\n", a.result.patches.size(), leaves);
+  assert_true(leaves >= 50);
+  assert_true(same_for_every_thread_count(a.result, b.result));
+  assert_true(same_for_every_thread_count(a.result, c.result));
+}
+
 void hard_shape_is_scale_and_thread_invariant(void**) {
   const FoldShape shape = dbs_folds::cone();
   dbs::Options one, two;
@@ -349,8 +377,7 @@ void hard_shape_is_scale_and_thread_invariant(void**) {
   two.threads = 2;
   one.max_level = two.max_level = 2;
   const Run a = run(shape, one), b = run(shape, two), scaled = run(shape, one, 1000.0);
-  assert_true(a.result.u == b.result.u && a.result.v == b.result.v);
-  assert_int_equal(a.result.folded_points, b.result.folded_points);
+  assert_true(same_for_every_thread_count(a.result, b.result));
   double worst = 0.0;
   for (std::size_t i = 0; i < a.result.u.size(); ++i) worst = std::max({worst, std::abs(a.result.u[i] - scaled.result.u[i]), std::abs(a.result.v[i] - scaled.result.v[i])});
   std::printf("cone: (u,v) of the cloud x1000 differ by %.3g\n", worst);
@@ -389,6 +416,7 @@ int main(int argc, char** argv) {
       cmocka_unit_test(repair_at_scan_density),
       cmocka_unit_test(sphere_cap_against_the_meshless_reference),
       cmocka_unit_test(hard_shape_is_scale_and_thread_invariant),
+      cmocka_unit_test(many_leaves_are_the_same_for_every_thread_count),
   };
   int failed = cmocka_run_group_tests_name("fold_free", always, nullptr, nullptr);
   if (!quick) failed += cmocka_run_group_tests_name("fold_free_hard_shapes", slow, nullptr, nullptr);
