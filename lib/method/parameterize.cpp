@@ -423,59 +423,74 @@ class Driver {
     inside_.assign(n, 0);
   }
 
-  /// The first part of A2 for one leaf: its subcloud's feet on it, kept where better; the
-  /// leaf's mean and max distance (over all its points, replacing the sample's figures of
-  /// the evolution) and whether it met the target.
-  void project_leaf(Patch& leaf) {
-    SurfaceProjector projector(leaf.surface);
-    projector.prepare(leaf.subcloud.size());
-    // A point appears once in the subcloud: each body touches only its own point's state.
-    std::vector<double> distance(leaf.subcloud.size());
-    meter_.run(leaf.subcloud.size(), threads_, [&](std::size_t k) {
-      const Foot foot = projector.project(points_[leaf.subcloud[k]]);
-      distance[k] = foot.distance;
-      consider(leaf.subcloud[k], leaf, foot);
-      meter_.add();
-    });
-    judge_leaf(leaf, distance);
+  /// The first part of A2 for the leaves `ids` (in id order): their subclouds' feet on them,
+  /// kept where better; each leaf's mean and max distance (over all its points, replacing the
+  /// sample's figures of the evolution) and whether it met the target.
+  void project_leaves(const std::vector<int>& ids) {
+    std::vector<const PointList*> lists;
+    for (int id : ids) lists.push_back(&result_.patches[id].subcloud);
+    project_onto_leaves(ids, lists, true);
   }
 
-  /// project_leaf for each of `ids` (leaves, in id order). The many small leaves of a deep
-  /// quadtree are projected several at once, one thread each (a leaf's own points are too few
-  /// to share among threads, and its projector's samples are made on one): their feet are
-  /// kept and then offered to consider() leaf after leaf, in the order project_leaf would, so a
-  /// point two leaves hold gets the same foot for every thread count.
-  void project_leaves(const std::vector<int>& ids) {
+  /// Projects the points lists[b] onto leaf ids[b], for every b, and offers each foot to
+  /// consider(), leaf after leaf in the order of `ids`; with `judge`, each leaf is then judged
+  /// on its points' distances (judge_leaf). The many small leaves of a deep quadtree go
+  /// several at once, one thread each (a leaf's few points are not worth sharing among
+  /// threads, and its projector's samples are made on one), their feet kept until offered in
+  /// that order, so a point two leaves hold gets the same foot for every thread count. A leaf
+  /// with more points goes alone, its points (distinct, each touching only its own state) on
+  /// all threads.
+  template <class List>
+  void project_onto_leaves(const std::vector<int>& ids, const std::vector<const List*>& lists, bool judge) {
     std::size_t first = 0;
     while (first < ids.size()) {
       std::size_t end = first, batch_points = 0;
-      while (end < ids.size() && batch_points + result_.patches[ids[end]].subcloud.size() <= kLeafBatchPoints) batch_points += result_.patches[ids[end++]].subcloud.size();
+      while (end < ids.size() && batch_points + lists[end]->size() <= kLeafBatchPoints) batch_points += lists[end++]->size();
       if (threads_ == 1 || end - first < 2) {
-        project_leaf(result_.patches[ids[first++]]);
+        project_onto_leaf(ids[first], *lists[first], judge);
+        ++first;
         continue;
       }
       std::vector<std::vector<Foot>> feet(end - first);
       meter_.run(end - first, threads_, [&](std::size_t b) {
+        const List& list = *lists[first + b];
         const Patch& leaf = result_.patches[ids[first + b]];
         SurfaceProjector projector(leaf.surface);
-        projector.prepare(leaf.subcloud.size());
-        feet[b].reserve(leaf.subcloud.size());
-        for (std::uint32_t i : leaf.subcloud) {
+        projector.prepare(list.size());
+        feet[b].reserve(list.size());
+        for (auto i : list) {
           feet[b].push_back(projector.project(points_[i]));
           meter_.add();
         }
       });
       for (std::size_t b = 0; b < feet.size(); ++b) {
+        const List& list = *lists[first + b];
         Patch& leaf = result_.patches[ids[first + b]];
         std::vector<double> distance(feet[b].size());
         for (std::size_t k = 0; k < feet[b].size(); ++k) {
           distance[k] = feet[b][k].distance;
-          consider(leaf.subcloud[k], leaf, feet[b][k]);
+          consider(list[k], leaf, feet[b][k]);
         }
-        judge_leaf(leaf, distance);
+        if (judge) judge_leaf(leaf, distance);
       }
       first = end;
     }
+  }
+
+  /// project_onto_leaves for one leaf, its points on all threads.
+  template <class List>
+  void project_onto_leaf(int id, const List& list, bool judge) {
+    Patch& leaf = result_.patches[id];
+    SurfaceProjector projector(leaf.surface);
+    projector.prepare(list.size());
+    std::vector<double> distance(list.size());
+    meter_.run(list.size(), threads_, [&](std::size_t k) {
+      const Foot foot = projector.project(points_[list[k]]);
+      distance[k] = foot.distance;
+      consider(list[k], leaf, foot);
+      meter_.add();
+    });
+    if (judge) judge_leaf(leaf, distance);
   }
 
   /// A leaf's mean and max distance over `distance` and whether it met the target. Summed in
@@ -539,7 +554,7 @@ class Driver {
       std::vector<std::size_t> missed;
       for (std::size_t i : clamped)
         if (result_.patch[i] < 0) missed.push_back(i);
-      if (!missed.empty()) project_onto(leaves[0], missed);
+      if (!missed.empty()) project_onto_leaf(leaves[0], missed, false);
       return;
     }
     begin_stage("parameterize", begin + (1.0 - begin) * 0.9, begin + (1.0 - begin) * kFoldsShare, clamped.size());
@@ -551,20 +566,11 @@ class Driver {
         if (result_.patch[i] < 0 || touches(result_.patches[id].rect, result_.u[i], result_.v[i])) across[id].push_back(i);
       }
     }
+    std::vector<int> targets;
+    std::vector<const std::vector<std::size_t>*> lists;
     for (int id : leaves)
-      if (!across[id].empty()) project_onto(id, across[id]);
-  }
-
-  /// Projects points[ids] onto leaf `id` and keeps each foot that is better.
-  void project_onto(int id, const std::vector<std::size_t>& ids) {
-    const Patch& leaf = result_.patches[id];
-    SurfaceProjector projector(leaf.surface);
-    projector.prepare(ids.size());
-    // ids are distinct: each body touches only its own point's state.
-    meter_.run(ids.size(), threads_, [&](std::size_t k) {
-      consider(ids[k], leaf, projector.project(points_[ids[k]]));
-      meter_.add();
-    });
+      if (!across[id].empty()) targets.push_back(id), lists.push_back(&across[id]);
+    project_onto_leaves(targets, lists, false);
   }
 
   /// A rectangle of the domain holding (u,v), its border included (to rounding).
