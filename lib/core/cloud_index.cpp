@@ -80,29 +80,18 @@ nanoflann::SearchParams exact_search(bool sorted) { return nanoflann::SearchPara
 struct RayBoxBound {
   Vec3 p, u;
   double bound;
-  /// The axes u x (each coordinate axis), their absolute values and squared lengths: the
-  /// same for every box of one query, computed once.
+  /// The axes u x (each coordinate axis), their absolute values and lengths: the same for
+  /// every box of one query, computed once.
   std::array<Vec3, 3> cross, cross_abs;
-  std::array<double, 3> cross_length2;
-  /// (bound (1 + 1e-12))^2: a box is refused only when its lower bound exceeds this, so that
-  /// the tests below, squared and without divisions, never refuse a box the exact bound would
-  /// keep (their rounding differs from the exact quotients by far less). A box kept in
-  /// excess costs a look at its points, each judged exactly; the points found are the same.
-  double refuse2;
+  std::array<double, 3> cross_length;
 
   RayBoxBound(const Vec3& point, const Vec3& unit, double b) : p(point), u(unit), bound(b) {
     cross = {{Vec3(0.0, -u.z(), u.y()), Vec3(u.z(), 0.0, -u.x()), Vec3(-u.y(), u.x(), 0.0)}};
     for (int a = 0; a < 3; ++a) {
       cross_abs[a] = cross[a].cwiseAbs();
-      cross_length2[a] = cross[a].squaredNorm();
+      cross_length[a] = cross[a].norm();
     }
-    const double refuse = b * (1.0 + 1e-12);
-    refuse2 = refuse * refuse;
   }
-
-  /// Whether axis a (squared length a2 > 0) separates the box far enough: r_min rho_a > bound,
-  /// with rho_a = gap / |a|, tested as r_min^2 gap^2 > bound^2 a2 for a positive gap.
-  bool separates(double r2_min, double gap, double a2) const { return gap > 0.0 && r2_min * (gap * gap) > refuse2 * a2; }
 
   bool may_hold(const Vec3& lo, const Vec3& hi) const {
     const Vec3 outside = (lo - p).cwiseMax(p - hi).cwiseMax(0.0);
@@ -110,15 +99,20 @@ struct RayBoxBound {
     // box this close to p is kept without looking at the line.
     const double r2_min = outside.squaredNorm();
     if (r2_min <= bound) return true;
+    const double r_min = std::sqrt(r2_min);
     const Vec3 half = 0.5 * (hi - lo);
     const Vec3 offset = 0.5 * (lo + hi) - p;
-    // Every point x of the box has r >= r_min and rho >= rho_a for each separating axis a, so
-    // the box is refused as soon as one axis gives r_min rho_a > bound.
+    // rho_min only grows from axis to axis, so the box is refused as soon as one axis
+    // separates it far enough (the same answer as the maximum over all four).
+    double rho_min = 0.0;
     const Vec3 across = offset - offset.dot(u) * u;
-    const double across2 = across.squaredNorm();
-    if (across2 > 0.0 && separates(r2_min, std::abs(across.dot(offset)) - across.cwiseAbs().dot(half), across2)) return false;
-    for (int a = 0; a < 3; ++a)
-      if (cross_length2[a] > 0.0 && separates(r2_min, std::abs(cross[a].dot(offset)) - cross_abs[a].dot(half), cross_length2[a])) return false;
+    const double across_length = across.norm();
+    if (across_length > 0.0) rho_min = std::max(rho_min, (std::abs(across.dot(offset)) - across.cwiseAbs().dot(half)) / across_length);
+    if (r_min * rho_min > bound) return false;
+    for (int a = 0; a < 3; ++a) {
+      if (cross_length[a] > 0.0) rho_min = std::max(rho_min, (std::abs(cross[a].dot(offset)) - cross_abs[a].dot(half)) / cross_length[a]);
+      if (r_min * rho_min > bound) return false;
+    }
     return true;
   }
 };
