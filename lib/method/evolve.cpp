@@ -93,12 +93,14 @@ void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3
     count_work(meter);
   };
   auto error_of = [&](double d) { return out_loss_mean ? robust_distance(loss, loss_scale, d) : d; };
-  if (std::isfinite(stop_above) && count >= kStopRounds.back()) {
+  if (std::isfinite(stop_above) && count >= kStopRounds.front()) {
     // In rounds over the sample interleaved (every kStopRounds[0]-th point first, then the
-    // ones halfway between, ...), each spread over the whole patch; the errors are never
-    // negative, so once the measured ones sum above stop_above x count the mean is above
-    // stop_above whatever the others are, and they are left unmeasured. The rounds do not
-    // depend on the thread count.
+    // ones halfway between, ...), each spread over the whole patch. The errors are never
+    // negative and are summed in index order, as the whole sample's are below: the rounded
+    // sum of all of them is at least that of the measured ones (rounding is monotone), so
+    // once (measured sum) / count is above stop_above, the mean the whole sample would give
+    // is too, and the others are left unmeasured; the decision is the one the whole
+    // measurement takes. The rounds do not depend on the thread count.
     std::vector<char> measured(count, 0);
     for (std::size_t step : kStopRounds) {
       std::vector<std::size_t> round;
@@ -109,7 +111,7 @@ void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3
       double sum = 0.0;
       for (std::size_t k = 0; k < count; ++k)
         if (measured[k]) sum += error_of(distance[k]);
-      if (sum > stop_above * static_cast<double>(count)) {
+      if (sum / static_cast<double>(count) > stop_above) {
         // Lower bounds: the unmeasured points count as 0.
         double distance_sum = 0.0, loss_sum = 0.0;
         for (std::size_t k = 0; k < count; ++k)

@@ -213,6 +213,9 @@ class Driver {
         result_.stage_seconds.parameterize += seconds_since(repair_start);
       }
     }
+    // The last judge is made: the neighbourhoods kept for the judges go (up to tens of MB).
+    judged_neighbourhoods_.reset();
+    std::vector<Vec3>().swap(judged_points_);
     place_far_points();
     summarize();
     crop();

@@ -119,6 +119,38 @@ void a_bound_below_the_error_stops_early(void**) {
     if (!std::isnan(stopped.feet[k].x())) assert_true(same_bits(stopped.feet[k].x(), whole.feet[k].x()) && same_bits(stopped.feet[k].y(), whole.feet[k].y()));
 }
 
+/// Whatever the bound, the measurement decides as the whole one does: it stops only when the
+/// whole sample's mean is above the bound, and a stopped one reports a mean above it (so the
+/// caller's test `error <= target` never accepts a measurement that stopped), down to bounds
+/// an ulp or two from the whole mean.
+void the_decision_is_that_of_the_whole_measurement(void**) {
+  const std::vector<Vec3> pts = bump_cloud();
+  const BaseSurface surface = flat_square();
+  const SurfaceProjector projector(surface, FootPrecision::Measure);
+  const Measured whole = measure(projector, pts, 1, kInf);
+  std::vector<double> bounds;
+  for (double f : {0.05, 0.3, 0.5, 0.7, 0.9, 0.99, 0.999999, 1.0, 1.000001, 1.5}) bounds.push_back(f * whole.mean);
+  double below = whole.mean, above = whole.mean;
+  for (int k = 0; k < 3; ++k) {
+    below = std::nextafter(below, 0.0);
+    above = std::nextafter(above, kInf);
+    bounds.push_back(below);
+    bounds.push_back(above);
+  }
+  std::size_t stops = 0;
+  for (double bound : bounds) {
+    const Measured m = measure(projector, pts, 1, bound);
+    if (m.stopped) {
+      ++stops;
+      assert_true(m.mean > bound);
+    } else {
+      assert_true(same_bits(m.mean, whole.mean));
+    }
+    assert_true((m.mean > bound) == (whole.mean > bound));
+  }
+  assert_true(stops >= 3);  // the low bounds stop early
+}
+
 void the_robust_error_stops_on_the_loss(void**) {
   const std::vector<Vec3> pts = bump_cloud();
   const BaseSurface surface = flat_square();
@@ -155,6 +187,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(a_bound_above_the_error_changes_nothing),
       cmocka_unit_test(a_bound_below_the_error_stops_early),
+      cmocka_unit_test(the_decision_is_that_of_the_whole_measurement),
       cmocka_unit_test(the_robust_error_stops_on_the_loss),
       cmocka_unit_test(an_early_stop_is_the_same_for_every_thread_count),
   };
