@@ -85,12 +85,29 @@ struct RayBoxBound {
   std::array<Vec3, 3> cross, cross_abs;
   std::array<double, 3> cross_length;
 
+  /// A point's own test, |d|^2 |d x u|^2 <= bound^2, scales as length^4: for a cloud near
+  /// 1e-100 across both sides underflow to 0 (and every point passed), near 1e75 they come
+  /// close to overflowing. So d is first scaled by `scale`, the power of two nearest
+  /// 1/sqrt(bound): scaling by a power of two is exact, so wherever the unscaled test did not
+  /// underflow or overflow it gives the same answer, bit for bit.
+  double scale = 1.0;
+  double scaled_bound2;
+
   RayBoxBound(const Vec3& point, const Vec3& unit, double b) : p(point), u(unit), bound(b) {
     cross = {{Vec3(0.0, -u.z(), u.y()), Vec3(u.z(), 0.0, -u.x()), Vec3(-u.y(), u.x(), 0.0)}};
     for (int a = 0; a < 3; ++a) {
       cross_abs[a] = cross[a].cwiseAbs();
       cross_length[a] = cross[a].norm();
     }
+    if (b > 0.0 && std::isfinite(b)) scale = std::ldexp(1.0, -std::ilogb(b) / 2);
+    const double scaled = b * scale * scale;
+    scaled_bound2 = scaled * scaled;
+  }
+
+  /// The point test on d = x - p.
+  bool holds(const Vec3& d) const {
+    const Vec3 scaled = d * scale;
+    return scaled.squaredNorm() * scaled.cross(u).squaredNorm() <= scaled_bound2;
   }
 
   bool may_hold(const Vec3& lo, const Vec3& hi) const {
@@ -193,12 +210,10 @@ struct CloudIndex::Impl {
   void collect_near_ray(const Chunk& chunk, const Tree::Node* node, Vec3 lo, Vec3 hi, const RayBoxBound& query, std::vector<std::size_t>& out) const {
     if (!query.may_hold(lo, hi)) return;
     if (node->child1 == nullptr && node->child2 == nullptr) {
-      const double bound2 = query.bound * query.bound;
       const auto& local = chunk.tree->DBS_NANOFLANN_MEMBER(vAcc);
       for (std::size_t i = node->node_type.lr.left; i < node->node_type.lr.right; ++i) {
         const std::size_t index = chunk.dataset.map(local[i]);
-        const Vec3 d = points[index] - query.p;
-        if (d.squaredNorm() * d.cross(query.u).squaredNorm() <= bound2) out.push_back(index);
+        if (query.holds(points[index] - query.p)) out.push_back(index);
       }
       return;
     }

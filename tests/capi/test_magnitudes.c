@@ -99,9 +99,11 @@ static void both_ends_of_the_range_work(void **state) {
     assert_true(fabs(ends[e]->degenerate - at_unit.degenerate) <= 10.0);
     assert_true(fabs(ends[e]->conformal_p95 - at_unit.conformal_p95) <= 0.05 * at_unit.conformal_p95);
   }
+  /* Within 1e-9 (seen: 6e-13 tiny, 9e-16 huge): at 1e-100 the ray neighbourhoods' test once
+   * underflowed and took far points too, which moved the (u,v) by 1.4e-7. */
   for (int k = 0; k < 2 * COUNT; ++k) {
-    assert_true(fabs(tiny[k] - unit[k]) < 1e-5);
-    assert_true(fabs(huge[k] - unit[k]) < 1e-5);
+    assert_true(fabs(tiny[k] - unit[k]) < 1e-9);
+    assert_true(fabs(huge[k] - unit[k]) < 1e-9);
   }
 }
 

@@ -149,6 +149,35 @@ void spacing_scales_exactly(void**) {
   assert_true(cloud_spacing(again) == h);
 }
 
+/// The ray neighbourhood of a cloud scaled by a power of two (every coordinate exact) at the
+/// ends of the supported magnitudes is the unit cloud's, point for point and in order: at
+/// about 1e-99 the test's products (length^4) would underflow to 0 and take every point of
+/// the boxes visited, at about 1e73 they would come near overflowing.
+void ray_neighbourhoods_are_the_same_at_any_magnitude(void**) {
+  const std::vector<Vec3> pts = random_cloud(3000, 8);
+  CloudIndex unit(pts);
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  for (int exponent : {-330, 242}) {
+    const double s = std::ldexp(1.0, exponent);
+    std::vector<Vec3> scaled;
+    for (const Vec3& p : pts) scaled.push_back(s * p);
+    CloudIndex index(scaled);
+    std::vector<std::size_t> at_unit, at_scale;
+    std::size_t found = 0;
+    for (int query = 0; query < 40; ++query) {
+      const Vec3 q(coordinate(rng), coordinate(rng), 0.2 * coordinate(rng)), n(coordinate(rng), coordinate(rng), coordinate(rng) + 2.0);
+      const double bound = 0.002 * (1 + query % 7);
+      unit.near_ray(q, n, bound, at_unit);
+      index.near_ray(s * q, n, bound * s * s, at_scale);
+      assert_true(at_scale == at_unit);
+      assert_true(at_unit.size() < pts.size() / 4);
+      found += at_unit.size();
+    }
+    assert_true(found > 40);
+  }
+}
+
 void forest_queries_match_brute_force(void**) {
   const std::vector<Vec3> pts = random_cloud(6000, 7);
   IndexBuild build;
@@ -270,6 +299,7 @@ int main() {
       cmocka_unit_test(subset_queries_answer_full_cloud_indices),
       cmocka_unit_test(spacing_is_the_pitch_of_a_grid),
       cmocka_unit_test(spacing_scales_exactly),
+      cmocka_unit_test(ray_neighbourhoods_are_the_same_at_any_magnitude),
       cmocka_unit_test(forest_queries_match_brute_force),
       cmocka_unit_test(forest_does_not_depend_on_threads),
       cmocka_unit_test(forest_build_is_metered_and_cancellable),
