@@ -92,52 +92,47 @@ void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3
     }
     count_work(meter);
   };
-  auto error_of = [&](double d) { return out_loss_mean ? robust_distance(loss, loss_scale, d) : d; };
-  if (std::isfinite(stop_above) && count >= kStopRounds.front()) {
-    // In rounds over the sample interleaved (every kStopRounds[0]-th point first, then the
-    // ones halfway between, ...), each spread over the whole patch. The errors are never
-    // negative and are summed in index order, as the whole sample's are below: the rounded
-    // sum of all of them is at least that of the measured ones (rounding is monotone), so
-    // once (measured sum) / count is above stop_above, the mean the whole sample would give
-    // is too, and the others are left unmeasured; the decision is the one the whole
-    // measurement takes. The rounds do not depend on the thread count.
-    std::vector<char> measured(count, 0);
-    for (std::size_t step : kStopRounds) {
-      std::vector<std::size_t> round;
-      for (std::size_t k = 0; k < count; k += step)
-        if (!measured[k]) round.push_back(k), measured[k] = 1;
-      metered_for(meter, round.size(), threads, [&](std::size_t r) { measure(round[r]); });
-      if (step == 1) break;
-      double sum = 0.0;
-      for (std::size_t k = 0; k < count; ++k)
-        if (measured[k]) sum += error_of(distance[k]);
-      if (sum / static_cast<double>(count) > stop_above) {
-        // Lower bounds: the unmeasured points count as 0.
-        double distance_sum = 0.0, loss_sum = 0.0;
-        for (std::size_t k = 0; k < count; ++k)
-          if (measured[k]) {
-            distance_sum += distance[k];
-            if (out_loss_mean) loss_sum += robust_distance(loss, loss_scale, distance[k]);
-            out_max = std::max(out_max, distance[k]);
-          }
-        out_mean = distance_sum / static_cast<double>(count);
-        if (out_loss_mean) *out_loss_mean = loss_sum / static_cast<double>(count);
-        if (out_stopped) *out_stopped = true;
-        return;
-      }
+  // The figures over the points measured (all of them when `measured` is null), each point
+  // counted in index order so that they do not depend on the thread count; a point left
+  // unmeasured counts as 0. Returns the error the target is judged on.
+  auto settle = [&](const std::vector<char>* measured) {
+    double sum = 0.0, loss_sum = 0.0, max = 0.0;
+    for (std::size_t k = 0; k < count; ++k) {
+      if (measured && !(*measured)[k]) continue;
+      sum += distance[k];
+      if (out_loss_mean) loss_sum += robust_distance(loss, loss_scale, distance[k]);
+      max = std::max(max, distance[k]);
     }
-  } else {
+    out_mean = sum / static_cast<double>(count);
+    out_max = max;
+    if (out_loss_mean) *out_loss_mean = loss_sum / static_cast<double>(count);
+    return out_loss_mean ? *out_loss_mean : out_mean;
+  };
+  if (!std::isfinite(stop_above) || count < kStopRounds.front()) {
     metered_for(meter, count, threads, measure);
+    settle(nullptr);
+    return;
   }
-  // Summed serially in index order so the result does not depend on the thread count.
-  double sum = 0.0, loss_sum = 0.0;
-  for (double d : distance) {
-    sum += d;
-    if (out_loss_mean) loss_sum += robust_distance(loss, loss_scale, d);
-    out_max = std::max(out_max, d);
+  // In rounds over the sample interleaved (every kStopRounds[0]-th point first, then the ones
+  // halfway between, ...), each spread over the whole patch. The errors are never negative
+  // and are summed in index order, as the whole sample's would be: the rounded sum of all of
+  // them is at least that of the measured ones (rounding is monotone), so once the measured
+  // ones' error is above stop_above, the whole sample's is too, and the others are left
+  // unmeasured: the decision is the one the whole measurement takes, and the figures are
+  // lower bounds. The rounds do not depend on the thread count.
+  std::vector<char> measured(count, 0);
+  for (std::size_t step : kStopRounds) {
+    std::vector<std::size_t> round;
+    for (std::size_t k = 0; k < count; k += step)
+      if (!measured[k]) round.push_back(k), measured[k] = 1;
+    metered_for(meter, round.size(), threads, [&](std::size_t r) { measure(round[r]); });
+    if (step == 1) break;
+    if (settle(&measured) > stop_above) {
+      if (out_stopped) *out_stopped = true;
+      return;
+    }
   }
-  out_mean = sum / static_cast<double>(count);
-  if (out_loss_mean) *out_loss_mean = loss_sum / static_cast<double>(count);
+  settle(nullptr);
 }
 
 void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedProjector& projector, const EvolveSettings& settings, const EvolveTick& tick) {

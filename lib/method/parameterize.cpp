@@ -480,7 +480,8 @@ class Driver {
     }
   }
 
-  /// project_onto_leaves for one leaf, its points on all threads.
+  /// project_onto_leaves for one leaf, its points on all threads. Each foot is offered as it
+  /// is found, not kept: a leaf may hold the whole cloud (56 bytes a point kept).
   template <class List>
   void project_onto_leaf(int id, const List& list, bool judge) {
     Patch& leaf = result_.patches[id];
