@@ -9,7 +9,11 @@
 // _SHARE, "n/a" with a dbs.h or library older than 0.3); mean point-to-surface distance and the
 // target used (DBS_STAT_ACCURACY); the result surface's distance to the truth, mean over the
 // points of dist(S(u_i,v_i), noise-free surface); wall time of dbs_parameterize; then the same
-// reference folds and time for the meshless reference.
+// reference folds and time for the meshless reference; last, the points on a turned sheet:
+// those where the result surface's own normal Su x Sv at the point's (u,v) points against the
+// noise-free surface's normal at its true (a,b). A pleated base surface can carry points in the
+// right order (no folded triangle) on a sheet turned over: its normals, a mesh of S over the
+// domain and a fit to S are then wrong there. (Libraries before 0.4 lack the derivatives: n/a.)
 //
 // usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--solver linear|ceres] [--density F] [--save DIR]
 #include <chrono>
@@ -112,7 +116,28 @@ struct Run {
   FoldCount folds;
   double levels = 0, patches = 0, mean_distance = 0, accuracy = 0, to_truth = 0, seconds = 0;
   std::string reference_free = "n/a";  // the library's own fold measure, points (share)
+  std::string turned = "n/a";          // points on a sheet turned against the truth (share)
 };
+
+/// The points whose result surface normal (su x sv, 3 doubles a point each) points against
+/// the noise-free surface's normal at their true parameters, as "count (share%)" of the points
+/// where the noise-free normal is defined. A zero or NaN su x sv counts as turned: it has no
+/// orientation to keep.
+std::string turned_points(const FoldShape& shape, const std::vector<double>& su, const std::vector<double>& sv) {
+  std::size_t turned = 0, judged = 0;
+  for (std::size_t i = 0; i < shape.count(); ++i) {
+    const dbs_folds::Point3 truth = dbs_folds::surface_normal(shape.surface, shape.uv_true[2 * i], shape.uv_true[2 * i + 1]);
+    if (truth[0] == 0.0 && truth[1] == 0.0 && truth[2] == 0.0) continue;  // singular there
+    const double* a = &su[3 * i];
+    const double* b = &sv[3 * i];
+    const double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    ++judged;
+    if (!(n[0] * truth[0] + n[1] * truth[1] + n[2] * truth[2] > 0.0)) ++turned;
+  }
+  char text[48];
+  std::snprintf(text, sizeof text, "%zu (%.2f%%)", turned, judged > 0 ? 100.0 * static_cast<double>(turned) / static_cast<double>(judged) : 0.0);
+  return text;
+}
 
 /// Writes the shape as DIR/NAME.xyz (with the true parameters as two further columns, which
 /// readers ignore) and DIR/NAME_boundary.txt (docs/FORMATS.md), so that dbs-param can run on
@@ -166,7 +191,13 @@ Run run_dbs(const FoldShape& shape, const dbs_options* options) {
   }
   std::vector<double> uv(2 * shape.count()), on_surface(3 * shape.count());
   if (status == DBS_OK) status = dbs_result_uv(result, uv.data(), shape.count());
+#if DBS_VERSION_NUMBER >= 400
+  std::vector<double> su(3 * shape.count()), sv(3 * shape.count());
+  if (status == DBS_OK) status = dbs_result_evaluate_many(result, uv.data(), shape.count(), on_surface.data(), nullptr, su.data(), sv.data());
+  if (status == DBS_OK) run.turned = turned_points(shape, su, sv);
+#else
   for (std::size_t i = 0; status == DBS_OK && i < shape.count(); ++i) status = dbs_result_evaluate(result, uv[2 * i], uv[2 * i + 1], &on_surface[3 * i], nullptr);
+#endif
   if (status != DBS_OK) {
     run.error = std::string(dbs_status_string(status)) + ": " + dbs_last_error_message();
   } else {
@@ -224,9 +255,10 @@ int main(int argc, char** argv) {
   std::printf("libdbs %s, max level %d, relative accuracy %g, threads %s, repair %s, solver %s\n", dbs_version_string(), max_level, relative_accuracy,
               threads == 0 ? "all" : std::to_string(threads).c_str(), repair ? "on" : "off", solver == DBS_SOLVER_CERES ? "ceres" : "linear");
   std::printf("folds: reference triangles whose signed (u,v) area is negative or below 1e-3 of the median, as inverted+collapsed;\n"
-              "to truth: mean distance of the result surface at each point's (u,v) to the noise-free surface\n\n");
-  std::printf("| shape | points | triangles | levels | patches | folds | folds %% | ref.-free folds | mean distance | target | to truth | time (s) | meshless folds | meshless %% | meshless time (s) |\n");
-  std::printf("|-------|-------:|----------:|-------:|--------:|------:|--------:|----------------:|--------------:|-------:|---------:|---------:|---------------:|-----------:|------------------:|\n");
+              "to truth: mean distance of the result surface at each point's (u,v) to the noise-free surface;\n"
+              "turned: points where the result surface's normal Su x Sv points against the noise-free surface's\n\n");
+  std::printf("| shape | points | triangles | levels | patches | folds | folds %% | ref.-free folds | mean distance | target | to truth | time (s) | meshless folds | meshless %% | meshless time (s) | turned |\n");
+  std::printf("|-------|-------:|----------:|-------:|--------:|------:|--------:|----------------:|--------------:|-------:|---------:|---------:|---------------:|-----------:|------------------:|-------:|\n");
   std::fflush(stdout);
   int failures = 0;
   for (const std::string& name : settings.shapes) {
@@ -249,12 +281,12 @@ int main(int argc, char** argv) {
       meshless_folds = std::string("error: ") + e.what();
     }
     if (run.ok) {
-      std::printf("| %s | %zu | %zu | %.0f | %.0f | %s | %s | %s | %.3g | %.3g | %.3g | %.2f | %s | %s | %s |\n", shape.name.c_str(), shape.count(), shape.triangle_count(),
+      std::printf("| %s | %zu | %zu | %.0f | %.0f | %s | %s | %s | %.3g | %.3g | %.3g | %.2f | %s | %s | %s | %s |\n", shape.name.c_str(), shape.count(), shape.triangle_count(),
                   run.levels, run.patches, folds(run.folds).c_str(), percent(run.folds).c_str(), run.reference_free.c_str(), run.mean_distance, run.accuracy, run.to_truth, run.seconds,
-                  meshless_folds.c_str(), meshless_share.c_str(), meshless_time.c_str());
+                  meshless_folds.c_str(), meshless_share.c_str(), meshless_time.c_str(), run.turned.c_str());
     } else {
       ++failures;
-      std::printf("| %s | %zu | %zu | error: %s | | | | | | | | %.2f | %s | %s | %s |\n", shape.name.c_str(), shape.count(), shape.triangle_count(), run.error.c_str(),
+      std::printf("| %s | %zu | %zu | error: %s | | | | | | | | %.2f | %s | %s | %s | |\n", shape.name.c_str(), shape.count(), shape.triangle_count(), run.error.c_str(),
                   run.seconds, meshless_folds.c_str(), meshless_share.c_str(), meshless_time.c_str());
     }
     std::fflush(stdout);
