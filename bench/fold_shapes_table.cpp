@@ -13,7 +13,8 @@
 // those where the result surface's own normal Su x Sv at the point's (u,v) points against the
 // noise-free surface's normal at its true (a,b). A pleated base surface can carry points in the
 // right order (no folded triangle) on a sheet turned over: its normals, a mesh of S over the
-// domain and a fit to S are then wrong there. (Libraries before 0.4 lack the derivatives: n/a.)
+// domain and a fit to S are then wrong there (libraries before 0.4 lack the derivatives: n/a);
+// and the library's own count of them, which needs no truth (DBS_STAT_TURNED_*).
 //
 // usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--solver linear|ceres] [--density F] [--save DIR]
 #include <chrono>
@@ -117,6 +118,7 @@ struct Run {
   double levels = 0, patches = 0, mean_distance = 0, accuracy = 0, to_truth = 0, seconds = 0;
   std::string reference_free = "n/a";  // the library's own fold measure, points (share)
   std::string turned = "n/a";          // points on a sheet turned against the truth (share)
+  std::string reference_free_turned = "n/a";  // the library's own count (DBS_STAT_TURNED_*)
 };
 
 /// The points whose result surface normal (su x sv, 3 doubles a point each) points against
@@ -216,6 +218,14 @@ Run run_dbs(const FoldShape& shape, const dbs_options* options) {
       run.reference_free = text;
     }
 #endif
+#ifdef DBS_STAT_TURNED_POINTS
+    double turned = 0.0, turned_share = 0.0;
+    if (dbs_result_stat(result, DBS_STAT_TURNED_POINTS, &turned) == DBS_OK && dbs_result_stat(result, DBS_STAT_TURNED_SHARE, &turned_share) == DBS_OK) {
+      char text[48];
+      std::snprintf(text, sizeof text, "%.0f (%.2f%%)", turned, 100.0 * turned_share);
+      run.reference_free_turned = text;
+    }
+#endif
 #ifdef DBS_STAT_COLLAPSED_POINTS
     double collapsed = 0.0;
     if (dbs_result_stat(result, DBS_STAT_COLLAPSED_POINTS, &collapsed) == DBS_OK) {
@@ -256,9 +266,9 @@ int main(int argc, char** argv) {
               threads == 0 ? "all" : std::to_string(threads).c_str(), repair ? "on" : "off", solver == DBS_SOLVER_CERES ? "ceres" : "linear");
   std::printf("folds: reference triangles whose signed (u,v) area is negative or below 1e-3 of the median, as inverted+collapsed;\n"
               "to truth: mean distance of the result surface at each point's (u,v) to the noise-free surface;\n"
-              "turned: points where the result surface's normal Su x Sv points against the noise-free surface's\n\n");
-  std::printf("| shape | points | triangles | levels | patches | folds | folds %% | ref.-free folds | mean distance | target | to truth | time (s) | meshless folds | meshless %% | meshless time (s) | turned |\n");
-  std::printf("|-------|-------:|----------:|-------:|--------:|------:|--------:|----------------:|--------------:|-------:|---------:|---------:|---------------:|-----------:|------------------:|-------:|\n");
+              "turned: points where the result surface's normal Su x Sv points against the noise-free surface's; ref.-free turned: the library's count\n\n");
+  std::printf("| shape | points | triangles | levels | patches | folds | folds %% | ref.-free folds | mean distance | target | to truth | time (s) | meshless folds | meshless %% | meshless time (s) | turned | ref.-free turned |\n");
+  std::printf("|-------|-------:|----------:|-------:|--------:|------:|--------:|----------------:|--------------:|-------:|---------:|---------:|---------------:|-----------:|------------------:|-------:|-----------------:|\n");
   std::fflush(stdout);
   int failures = 0;
   for (const std::string& name : settings.shapes) {
@@ -281,12 +291,12 @@ int main(int argc, char** argv) {
       meshless_folds = std::string("error: ") + e.what();
     }
     if (run.ok) {
-      std::printf("| %s | %zu | %zu | %.0f | %.0f | %s | %s | %s | %.3g | %.3g | %.3g | %.2f | %s | %s | %s | %s |\n", shape.name.c_str(), shape.count(), shape.triangle_count(),
+      std::printf("| %s | %zu | %zu | %.0f | %.0f | %s | %s | %s | %.3g | %.3g | %.3g | %.2f | %s | %s | %s | %s | %s |\n", shape.name.c_str(), shape.count(), shape.triangle_count(),
                   run.levels, run.patches, folds(run.folds).c_str(), percent(run.folds).c_str(), run.reference_free.c_str(), run.mean_distance, run.accuracy, run.to_truth, run.seconds,
-                  meshless_folds.c_str(), meshless_share.c_str(), meshless_time.c_str(), run.turned.c_str());
+                  meshless_folds.c_str(), meshless_share.c_str(), meshless_time.c_str(), run.turned.c_str(), run.reference_free_turned.c_str());
     } else {
       ++failures;
-      std::printf("| %s | %zu | %zu | error: %s | | | | | | | | %.2f | %s | %s | %s | |\n", shape.name.c_str(), shape.count(), shape.triangle_count(), run.error.c_str(),
+      std::printf("| %s | %zu | %zu | error: %s | | | | | | | | %.2f | %s | %s | %s | | |\n", shape.name.c_str(), shape.count(), shape.triangle_count(), run.error.c_str(),
                   run.seconds, meshless_folds.c_str(), meshless_share.c_str(), meshless_time.c_str());
     }
     std::fflush(stdout);

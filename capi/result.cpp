@@ -62,9 +62,11 @@ double stat_value(const dbs::Result& r, int32_t stat) {
     case DBS_STAT_CLAMPED_POINTS: return static_cast<double>(r.clamped_points);
     case DBS_STAT_FAR_POINTS: return static_cast<double>(r.far_points);
     case DBS_STAT_CROPPED_POINTS: return static_cast<double>(r.cropped_points);
+    case DBS_STAT_TURNED_POINTS: return static_cast<double>(r.turned_points);
+    case DBS_STAT_TURNED_SHARE: return r.turned_share;
     default: break;
   }
-  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_CROPPED_POINTS + 1) + ")");
+  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_TURNED_SHARE + 1) + ")");
 }
 
 }  // namespace

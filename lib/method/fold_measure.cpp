@@ -454,6 +454,7 @@ FoldMeasure FoldNeighbourhoods::Impl::judge(const std::vector<double>& u, const 
   FoldMeasure m;
   m.points = n;
   m.state.assign(n, kFoldUndecided);
+  m.right_normal.assign(n, Vec3::Zero());
   m.coincident = count_coincident(u, v);
   m.undecided = n;
   if (!index) return m;
@@ -501,6 +502,8 @@ FoldMeasure FoldNeighbourhoods::Impl::judge(const std::vector<double>& u, const 
     if (local[i].sign != 0 && orientation[i] != 0) balance[component[i]] += local[i].sign * orientation[i];
   m.undecided = 0;
   for (std::size_t i = 0; i < n; ++i) {
+    if (orientation[i] != 0 && balance[component[i]] != 0)
+      m.right_normal[i] = (orientation[i] * (balance[component[i]] > 0 ? 1.0 : -1.0)) * local[i].normal;
     const int sign = local[i].sign * orientation[i];
     const std::int64_t b = sign == 0 ? 0 : balance[component[i]];
     if (sign == 0 || b == 0) {

@@ -82,6 +82,12 @@ struct FoldMeasure {
   std::size_t collapsed = 0;   ///< undecided points whose neighbourhood is squeezed (kFoldCollapsed), part of `undecided`
   double folded_share = 0.0;   ///< folded / (points - undecided); 0 when no point is decided
   std::vector<std::int8_t> state;  ///< per point: kFoldOk (+1), kFolded (-1), kFoldUndecided (0), kFoldCollapsed (-2), kFoldScrambled (-3)
+  /// Per point: the unit normal towards which a surface agreeing with the (u,v) turns its
+  /// Su x Sv there: the point's PCA normal, oriented with the others and signed by its
+  /// component's majority (a surface S with S(u_i,v_i) near the points and the orientation
+  /// of their (u,v) has Su x Sv . right_normal > 0). Zero where that is unknown (a point
+  /// outside the orientation graph, or its component without a majority). For turned_sheets.hpp.
+  std::vector<Vec3> right_normal;
 };
 
 /// Judges the parameterization (u[i], v[i]) of points[i]. noise_sigma >= 0 is the cloud's noise

@@ -25,6 +25,7 @@
 #include "robust_loss.hpp"
 #include "subdivide.hpp"
 #include "surface_projection.hpp"
+#include "turned_sheets.hpp"
 #include "work_meter.hpp"
 
 namespace dbs {
@@ -213,6 +214,12 @@ class Driver {
         result_.stage_seconds.parameterize += seconds_since(repair_start);
       }
     }
+    // The surface under the judged points, against the normals the last judge found.
+    folds_start = Clock::now();
+    const TurnedSheets turned = turned_sheets(result_, judged, folds, threads_);
+    result_.turned_points = turned.turned;
+    result_.turned_share = turned.share;
+    result_.stage_seconds.folds += seconds_since(folds_start);
     // The last judge is made: the neighbourhoods kept for the judges go (up to tens of MB).
     judged_neighbourhoods_.reset();
     std::vector<Vec3>().swap(judged_points_);
@@ -229,6 +236,7 @@ class Driver {
     result_.collapsed_points = folds.collapsed;
     result_.coincident_points = folds.coincident;
     result_.folded_share = folds.folded_share;
+
     result_.seconds = seconds_since(start);
     report(1.0, "done");
     return std::move(result_);

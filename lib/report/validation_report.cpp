@@ -184,6 +184,8 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   json.integer("folded_points", static_cast<long long>(result.folded_points));
   json.integer("undecided_points", static_cast<long long>(result.undecided_points));
   json.integer("collapsed_points", static_cast<long long>(result.collapsed_points));
+  json.integer("turned_points", static_cast<long long>(result.turned_points));
+  json.number("turned_share", result.turned_share);
   json.integer("coincident_points", static_cast<long long>(result.coincident_points));
   json.number("folded_share", result.folded_share);
   json.integer("repaired_points", static_cast<long long>(result.repaired_points));

@@ -143,10 +143,13 @@ static void statistics(void **state) {
   assert_true(result_stat(f->result, DBS_STAT_COVERAGE) == 1.0);
   assert_true(result_stat(f->result, DBS_STAT_CLAMPED_POINTS) == 0);
   assert_true(result_stat(f->result, DBS_STAT_FAR_POINTS) == 0);
+  /* A smooth fixture's surface turns nowhere against its cloud. */
+  assert_true(result_stat(f->result, DBS_STAT_TURNED_POINTS) == 0);
+  assert_true(result_stat(f->result, DBS_STAT_TURNED_SHARE) == 0);
 
   double value = -7;
-  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 35)");
-  assert_failure(dbs_result_stat(f->result, 35, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 35 ");
+  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 37)");
+  assert_failure(dbs_result_stat(f->result, 37, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 37 ");
   assert_true(value == -7);
 }
 

@@ -450,6 +450,11 @@ static void test_report(void **state) {
   snprintf(expected, sizeof expected, "\"judged_points\": %zu,", n);
   assert_non_null(strstr(json, expected));
   assert_non_null(strstr(json, "\"folded_points\": 0,"));
+  /* the bump's surface turns nowhere against its cloud (since 0.4) */
+  double turned = -1;
+  assert_ok(dbs_result_stat(f->bump_result, DBS_STAT_TURNED_POINTS, &turned));
+  assert_true(turned == 0);
+  assert_non_null(strstr(json, "\"turned_points\": 0,"));
   assert_non_null(strstr(json, "\"per_axis\""));
   assert_non_null(strstr(json, "\"uniform\""));
   assert_non_null(strstr(json, "\"timings_seconds\""));

@@ -49,6 +49,7 @@ struct Run {
   dbs::Result result;
   dbs_folds::FoldCount folds;
   double to_truth = 0.0;  // mean |S(u_i, v_i) - noise-free surface|
+  std::size_t turned_truth = 0;  // points where the surface's Su x Sv points against the noise-free normal
 };
 
 Run run(const FoldShape& shape, dbs::Options options = {}, double scale = 1.0) {
@@ -67,13 +68,18 @@ Run run(const FoldShape& shape, dbs::Options options = {}, double scale = 1.0) {
     uv.push_back(r.result.v[i]);
     const Vec3 s = r.result.evaluate(r.result.u[i], r.result.v[i]) / scale;
     on_surface.insert(on_surface.end(), {s.x(), s.y(), s.z()});
+    const dbs_folds::Point3 truth = dbs_folds::surface_normal(shape.surface, shape.uv_true[2 * i], shape.uv_true[2 * i + 1]);
+    Vec3 su, sv;
+    r.result.derivatives(r.result.u[i], r.result.v[i], su, sv);
+    if (Vec3(truth[0], truth[1], truth[2]) != Vec3::Zero() && !(su.cross(sv).dot(Vec3(truth[0], truth[1], truth[2])) > 0.0)) ++r.turned_truth;
   }
   r.folds = dbs_folds::fold_share(uv, shape.triangles);
   r.to_truth = dbs_folds::mean_distance_to_surface(shape, on_surface);
   std::printf("%-13s levels %d patches %3zu folds %4zu (%5.2f%%) mean %.3g to truth %.3g target %.3g (requested %.3g) noise %.3g measure %.2f%% (%zu/%zu undecided)\n",
               shape.name.c_str(), r.result.levels, r.result.patches.size(), r.folds.folded, 100.0 * r.folds.share, r.result.mean_distance, r.to_truth,
               r.result.accuracy, r.result.requested_accuracy, r.result.noise, 100.0 * r.result.folded_share, r.result.undecided_points, r.result.judged_points);
-  std::printf("%-13s collapsed %zu of the undecided\n", shape.name.c_str(), r.result.collapsed_points);
+  std::printf("%-13s collapsed %zu of the undecided; turned %zu (%.2f%%), against the truth %zu\n", shape.name.c_str(), r.result.collapsed_points, r.result.turned_points,
+              100.0 * r.result.turned_share, r.turned_truth);
   return r;
 }
 
@@ -82,6 +88,9 @@ void noisy_saddle_stays_on_the_truth_and_folds_nothing(void**) {
   const Run r = run(shape);
   assert_int_equal(r.folds.folded, 0);
   assert_true(r.to_truth < shape.noise_sigma / 3.0);
+  // Its surface turns nowhere, by the truth and by the library's own measure.
+  assert_int_equal(r.turned_truth, 0);
+  assert_int_equal(r.result.turned_points, 0);
   // The estimate is calibrated (within 30% of the true sigma) and raised the target to the
   // floor 1.25 sigma sqrt(2/pi); a single patch then fits.
   std::printf("noisy saddle: sigma %.4g, estimated %.4g\n", shape.noise_sigma, r.result.noise);
@@ -205,6 +214,8 @@ void clean_saddle_has_no_noise(void**) {
   assert_true(r.result.accuracy == r.result.requested_accuracy);
   assert_int_equal(r.result.folded_points, 0);
   assert_int_equal(r.result.collapsed_points, 0);
+  assert_int_equal(r.turned_truth, 0);
+  assert_int_equal(r.result.turned_points, 0);
 }
 
 void noise_does_not_change_the_level_count(void**) {
@@ -230,11 +241,17 @@ void hard_shapes_stay_within_their_bounds(void**) {
   // the seam-aware assignment (0.2): 9.65%, 7.37%, 4.08%, 0.21%, 1.27%, 2.30%. The repair is on
   // by default because it keeps or lowers both figures on every shape: checked here against a
   // run without it.
+  //
+  // Points on a turned sheet (the surface's Su x Sv at their (u,v) against the noise-free
+  // normal; DBS_STAT_TURNED_*), today at 4,096 points 1.56% / 6.86% / 5.30% / 0.44% / 0.22% /
+  // 0 by the truth and 1.64% / 6.86% / 4.27% / 0.25% / 0.24% / 0 by the library's own measure
+  // (which has no normal for a few points, e.g. round the fingers' tips): bounded like the
+  // folds, and the library's count must agree with the truth's within a quarter and ten points.
   const struct {
     const char* name;
-    double max_share, max_mean;
-  } bounds[] = {{"mushroom", 0.0005, 0.0045}, {"tall-dome", 0.002, 0.0115}, {"fingers", 0.0015, 0.004},
-                {"open-box", 0.002, 0.001}, {"cone", 0.0005, 0.0008}, {"sphere-cap", 0.001, 0.0034}};
+    double max_share, max_mean, max_turned;
+  } bounds[] = {{"mushroom", 0.0005, 0.0045, 0.025}, {"tall-dome", 0.002, 0.0115, 0.08}, {"fingers", 0.0015, 0.004, 0.065},
+                {"open-box", 0.002, 0.001, 0.007}, {"cone", 0.0005, 0.0008, 0.005}, {"sphere-cap", 0.001, 0.0034, 0.001}};
   dbs::Options without;
   without.repair = 0;
   for (const auto& b : bounds) {
@@ -242,6 +259,9 @@ void hard_shapes_stay_within_their_bounds(void**) {
     const Run r = run(shape);
     assert_true(r.folds.share <= b.max_share);
     assert_true(r.result.mean_distance <= b.max_mean);
+    assert_true(r.result.turned_share <= b.max_turned);
+    const double gap = std::abs(static_cast<double>(r.result.turned_points) - static_cast<double>(r.turned_truth));
+    assert_true(gap <= 0.25 * static_cast<double>(r.turned_truth) + 10.0);
     const Run plain = run(shape, without);
     assert_true(r.folds.folded <= plain.folds.folded);
     assert_true(r.result.mean_distance <= plain.result.mean_distance);

@@ -1,0 +1,37 @@
+#include "turned_sheets.hpp"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <string>
+
+#include "error.hpp"
+#include "parallel.hpp"
+
+namespace dbs {
+
+TurnedSheets turned_sheets(const Result& result, const std::vector<std::size_t>& judged, const FoldMeasure& folds, int threads) {
+  const std::size_t n = folds.right_normal.size();
+  if (!judged.empty() && judged.size() != n)
+    fail(ErrorCode::InvalidArgument, "turned_sheets: " + std::to_string(judged.size()) + " judged points but " + std::to_string(n) + " normals");
+  if (judged.empty() && n != result.u.size())
+    fail(ErrorCode::InvalidArgument, "turned_sheets: " + std::to_string(n) + " normals for " + std::to_string(result.u.size()) + " points");
+  // Per judged point: 0 not judged, 1 right, 2 turned (counted afterwards, in order).
+  std::vector<char> verdict(n, 0);
+  parallel_for(n, threads, [&](std::size_t k) {
+    const Vec3& right = folds.right_normal[k];
+    if (right.isZero()) return;
+    const std::size_t i = judged.empty() ? k : judged[k];
+    Vec3 su, sv;
+    result.derivatives(result.u[i], result.v[i], su, sv);
+    verdict[k] = su.cross(sv).dot(right) > 0.0 ? 1 : 2;
+  });
+  TurnedSheets out;
+  for (char c : verdict) {
+    out.judged += c != 0;
+    out.turned += c == 2;
+  }
+  out.share = out.judged == 0 ? 0.0 : static_cast<double>(out.turned) / static_cast<double>(out.judged);
+  return out;
+}
+
+}  // namespace dbs

@@ -1,0 +1,31 @@
+// Points on a turned sheet: where the result surface under a point turns its back on the
+// cloud. The fold measure judges the order of the points' (u,v) and trusts no surface; a
+// surface pleated between its grid nodes, or refitted through a squeezed band by the repair,
+// can carry points whose (u,v) are in order on a sheet turned over, and there a mesh of the
+// surface over the domain overlaps itself and the surface's normals point the wrong way. A
+// point counts as turned when the surface's Su x Sv at its (u,v) does not point towards the
+// normal the fold measure found for it from the cloud (FoldMeasure::right_normal: its PCA
+// normal, oriented consistently over the cloud and signed by the majority of the (u,v) maps
+// of its component), so that a globally mirrored (u,v), whose surface is mirrored with it,
+// turns nothing. A zero or non-finite Su x Sv counts as turned (it has no orientation to keep).
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "fold_measure.hpp"
+#include "result.hpp"
+
+namespace dbs {
+
+struct TurnedSheets {
+  std::size_t judged = 0;  ///< points with a right normal (the rest are not judged)
+  std::size_t turned = 0;  ///< ... of them on a turned sheet
+  double share = 0.0;      ///< turned / judged; 0 when none is judged
+};
+
+/// The points of `folds` (the fold measure of result's (u,v) on the points `judged`, indices
+/// into the result's points, or on every point when `judged` is empty) on a turned sheet of
+/// `result`'s surface. Deterministic for any thread count (as Options::threads).
+TurnedSheets turned_sheets(const Result& result, const std::vector<std::size_t>& judged, const FoldMeasure& folds, int threads);
+
+}  // namespace dbs
