@@ -53,6 +53,8 @@ def test_parameterize_with_keywords_gives_numpy_arrays():
     assert (result.levels == 0).all() and (result.flags == 0).all()
     assert result.stat("levels") == 1.0 and result.stat(libdbs.Stat.LEVELS) == 1.0
     assert "mean_distance" in result.stats
+    # a plane's surface agrees with its (u,v) everywhere: no point on a turned sheet
+    assert result.stats["turned_points"] == 0.0 and result.stat("turned_share") == 0.0
     assert repr(result).startswith("<libdbs.Result of 861 points: 1 leaves on 1 levels")
     assert len(result.patches) == 1 and result.patches[0]["leaf"]
 
