@@ -121,6 +121,13 @@ struct Run {
   std::string reference_free_turned = "n/a";  // the library's own count (DBS_STAT_TURNED_*)
 };
 
+/// "count (share%)", share in [0,1].
+std::string count_with_share(double count, double share) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.0f (%.2f%%)", count, 100.0 * share);
+  return text;
+}
+
 /// The points whose result surface normal (su x sv, 3 doubles a point each) points against
 /// the noise-free surface's normal at their true parameters, as "count (share%)" of the points
 /// where the noise-free normal is defined. A zero or NaN su x sv counts as turned: it has no
@@ -136,9 +143,15 @@ std::string turned_points(const FoldShape& shape, const std::vector<double>& su,
     ++judged;
     if (!(n[0] * truth[0] + n[1] * truth[1] + n[2] * truth[2] > 0.0)) ++turned;
   }
-  char text[48];
-  std::snprintf(text, sizeof text, "%zu (%.2f%%)", turned, judged > 0 ? 100.0 * static_cast<double>(turned) / static_cast<double>(judged) : 0.0);
-  return text;
+  return count_with_share(static_cast<double>(turned), judged > 0 ? static_cast<double>(turned) / static_cast<double>(judged) : 0.0);
+}
+
+/// A count of the library's statistic `count_id` and its share `share_id` of the judged points,
+/// as "count (share%)"; "n/a" when the library does not give them.
+std::string count_and_share(const dbs_result* result, int32_t count_id, int32_t share_id) {
+  double count = 0.0, share = 0.0;
+  if (dbs_result_stat(result, count_id, &count) != DBS_OK || dbs_result_stat(result, share_id, &share) != DBS_OK) return "n/a";
+  return count_with_share(count, share);
 }
 
 /// Writes the shape as DIR/NAME.xyz (with the true parameters as two further columns, which
@@ -211,20 +224,10 @@ Run run_dbs(const FoldShape& shape, const dbs_options* options) {
     run.accuracy = stat(result, DBS_STAT_ACCURACY);
     run.to_truth = dbs_folds::mean_distance_to_surface(shape, on_surface);
 #ifdef DBS_STAT_FOLDED_SHARE
-    double points = 0.0, share = 0.0;
-    if (dbs_result_stat(result, DBS_STAT_FOLDED_POINTS, &points) == DBS_OK && dbs_result_stat(result, DBS_STAT_FOLDED_SHARE, &share) == DBS_OK) {
-      char text[64];
-      std::snprintf(text, sizeof text, "%.0f (%.2f%%)", points, 100.0 * share);
-      run.reference_free = text;
-    }
+    run.reference_free = count_and_share(result, DBS_STAT_FOLDED_POINTS, DBS_STAT_FOLDED_SHARE);
 #endif
 #ifdef DBS_STAT_TURNED_POINTS
-    double turned = 0.0, turned_share = 0.0;
-    if (dbs_result_stat(result, DBS_STAT_TURNED_POINTS, &turned) == DBS_OK && dbs_result_stat(result, DBS_STAT_TURNED_SHARE, &turned_share) == DBS_OK) {
-      char text[48];
-      std::snprintf(text, sizeof text, "%.0f (%.2f%%)", turned, 100.0 * turned_share);
-      run.reference_free_turned = text;
-    }
+    run.reference_free_turned = count_and_share(result, DBS_STAT_TURNED_POINTS, DBS_STAT_TURNED_SHARE);
 #endif
 #ifdef DBS_STAT_COLLAPSED_POINTS
     double collapsed = 0.0;
