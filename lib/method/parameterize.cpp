@@ -236,7 +236,6 @@ class Driver {
     result_.collapsed_points = folds.collapsed;
     result_.coincident_points = folds.coincident;
     result_.folded_share = folds.folded_share;
-
     result_.seconds = seconds_since(start);
     report(1.0, "done");
     return std::move(result_);

@@ -38,11 +38,11 @@ struct Result {
   // It judges at most 20,000 points of the body, evenly spread over the input order; counts are of those.
   std::size_t judged_points = 0, folded_points = 0, undecided_points = 0, coincident_points = 0;
   std::size_t collapsed_points = 0;  // of the undecided: neighbourhood squeezed in (u,v)
+  double folded_share = 0.0;  // folded / decided points
   // Of the judged points, those on a sheet of the surface turned against the cloud
   // (turned_sheets.hpp), and their share of the judged points the measure gives a normal.
   std::size_t turned_points = 0;
   double turned_share = 0.0;
-  double folded_share = 0.0;  // folded / decided points
   int levels = 0;             // quadtree levels present (1 = root only)
   int iterations = 0;         // grid evolutions over all patches
   int solver = 0;             // the solver that ran (Solver: 0 linear, 1 Ceres)

@@ -1,7 +1,6 @@
 #include "turned_sheets.hpp"
 
 #include <Eigen/Geometry>
-#include <cmath>
 #include <string>
 
 #include "error.hpp"
@@ -15,9 +14,12 @@ TurnedSheets turned_sheets(const Result& result, const std::vector<std::size_t>&
     fail(ErrorCode::InvalidArgument, "turned_sheets: " + std::to_string(judged.size()) + " judged points but " + std::to_string(n) + " normals");
   if (judged.empty() && n != result.u.size())
     fail(ErrorCode::InvalidArgument, "turned_sheets: " + std::to_string(n) + " normals for " + std::to_string(result.u.size()) + " points");
+  for (std::size_t k = 0; k < judged.size(); ++k)
+    if (judged[k] >= result.u.size())
+      fail(ErrorCode::InvalidArgument, "turned_sheets: judged point " + std::to_string(judged[k]) + " is not one of the " + std::to_string(result.u.size()) + " points");
   // Per judged point: 0 not judged, 1 right, 2 turned (counted afterwards, in order).
   std::vector<char> verdict(n, 0);
-  parallel_for(n, threads, [&](std::size_t k) {
+  parallel_for(n, resolve_threads(threads), [&](std::size_t k) {
     const Vec3& right = folds.right_normal[k];
     if (right.isZero()) return;
     const std::size_t i = judged.empty() ? k : judged[k];

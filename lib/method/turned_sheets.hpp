@@ -25,7 +25,10 @@ struct TurnedSheets {
 
 /// The points of `folds` (the fold measure of result's (u,v) on the points `judged`, indices
 /// into the result's points, or on every point when `judged` is empty) on a turned sheet of
-/// `result`'s surface. Deterministic for any thread count (as Options::threads).
+/// `result`'s surface. threads as Options::threads (0 = all cores); the counts do not depend
+/// on it. Throws Error(InvalidArgument) when `judged` (non-empty) and the measure's points
+/// differ in number, when `judged` is empty and the measure is not of every point, or when a
+/// judged index is not a point of `result`.
 TurnedSheets turned_sheets(const Result& result, const std::vector<std::size_t>& judged, const FoldMeasure& folds, int threads);
 
 }  // namespace dbs

@@ -418,6 +418,25 @@ void hard_shape_is_scale_and_thread_invariant(void**) {
 
 }  // namespace
 
+void far_points_leave_the_turned_count_alone(void**) {
+  // With points far outside the body, the fold measure judges a list of the others (the
+  // driver's path with judged indices): the tall dome's points on turned sheets are the same
+  // as without them, point for point in (u,v).
+  const FoldShape shape = dbs_folds::fold_shape("tall-dome");
+  const dbs::Boundary boundary(points_of(shape.bottom), points_of(shape.right), points_of(shape.top), points_of(shape.left));
+  std::vector<Vec3> points = points_of(shape.xyz);
+  const dbs::Result plain = dbs::parameterize(dbs::PointCloud(points), boundary, dbs::Options());
+  for (double x : {1e6, -2e6, 3e6}) points.emplace_back(x, 0.5, 0.1);
+  dbs::Options options;
+  options.warning = [](const char*) {};
+  const dbs::Result with_far = dbs::parameterize(dbs::PointCloud(points), boundary, options);
+  assert_int_equal(with_far.far_points, 3);
+  for (std::size_t i = 0; i < plain.u.size(); ++i) assert_true(with_far.u[i] == plain.u[i] && with_far.v[i] == plain.v[i]);
+  assert_true(plain.turned_points > 50);
+  assert_int_equal(with_far.turned_points, plain.turned_points);
+  assert_true(with_far.turned_share == plain.turned_share);
+}
+
 int main(int argc, char** argv) {
   // "--quick": the group that holds, for the sanitizer build.
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
@@ -437,6 +456,7 @@ int main(int argc, char** argv) {
       cmocka_unit_test(sphere_cap_against_the_meshless_reference),
       cmocka_unit_test(hard_shape_is_scale_and_thread_invariant),
       cmocka_unit_test(many_leaves_are_the_same_for_every_thread_count),
+      cmocka_unit_test(far_points_leave_the_turned_count_alone),
   };
   int failed = cmocka_run_group_tests_name("fold_free", always, nullptr, nullptr);
   if (!quick) failed += cmocka_run_group_tests_name("fold_free_hard_shapes", slow, nullptr, nullptr);

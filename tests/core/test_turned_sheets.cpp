@@ -1,13 +1,17 @@
 // Points on a turned sheet (turned_sheets.hpp): the result surface's Su x Sv at a point's (u,v)
 // against the normal the fold measure finds for it from the cloud. A surface that agrees with
 // its (u,v) turns nothing; the same surface under (u,v) mirrored (the fold measure's majority
-// flips, the surface does not) turns every judged point; a judged subset gives the same
-// verdicts; the counts do not depend on the thread count; sizes that do not match are refused.
+// flips, the surface does not) turns every judged point; on a shape whose surfaces do turn
+// over in places (the tall dome of the fold shapes), the verdicts are those of each judged
+// point's own (u,v) and normal, for a subset too, and parameterize reports the same count;
+// the counts do not depend on the thread count; sizes and indices that do not fit are refused.
 #include <cmath>
 #include <vector>
 
 #include "analytic_clouds.hpp"
+#include "boundary.hpp"
 #include "fold_measure.hpp"
+#include "fold_shapes.hpp"
 #include "parameterize.hpp"
 #include "point_cloud.hpp"
 #include "turned_sheets.hpp"
@@ -84,6 +88,55 @@ void a_judged_subset_gives_the_same_verdicts(void**) {
   assert_int_equal(turned.turned, turned.judged);
 }
 
+std::vector<Vec3> points_of(const std::vector<double>& xyz) {
+  std::vector<Vec3> p;
+  for (std::size_t i = 0; i + 2 < xyz.size(); i += 3) p.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
+  return p;
+}
+
+/// Judged point k (points[judged[k]]) counted turned, each from its own (u,v) and normal.
+std::size_t turned_by_hand(const Result& r, const std::vector<std::size_t>& judged, const FoldMeasure& folds) {
+  std::size_t turned = 0;
+  for (std::size_t k = 0; k < judged.size(); ++k) {
+    if (folds.right_normal[k].isZero()) continue;
+    Vec3 su, sv;
+    r.derivatives(r.u[judged[k]], r.v[judged[k]], su, sv);
+    turned += su.cross(sv).dot(folds.right_normal[k]) > 0.0 ? 0 : 1;
+  }
+  return turned;
+}
+
+void each_point_is_judged_at_its_own_uv(void**) {
+  const dbs_folds::FoldShape shape = dbs_folds::fold_shape("tall-dome");
+  const std::vector<Vec3> points = points_of(shape.xyz);
+  const Boundary boundary(points_of(shape.bottom), points_of(shape.right), points_of(shape.top), points_of(shape.left));
+  const Result r = parameterize(PointCloud(points), boundary, Options());
+  // What parameterize reports is the count on every point against the last fold measure.
+  const FoldMeasure all = measure_folds(points, r.u, r.v, r.noise, 2);
+  const TurnedSheets whole = turned_sheets(r, {}, all, 2);
+  assert_int_equal(whole.turned, r.turned_points);
+  assert_true(whole.share == r.turned_share);
+  // Some turned, most not: a verdict read at another point's (u,v) would change the count.
+  assert_true(whole.turned > 50 && whole.turned < whole.judged / 4);
+  std::vector<std::size_t> every(points.size());
+  for (std::size_t i = 0; i < every.size(); ++i) every[i] = i;
+  assert_int_equal(whole.turned, turned_by_hand(r, every, all));
+  // Every second point, judged from the subset's own measure.
+  std::vector<std::size_t> judged;
+  std::vector<Vec3> subset;
+  std::vector<double> u, v;
+  for (std::size_t i = 1; i < points.size(); i += 2) {
+    judged.push_back(i);
+    subset.push_back(points[i]);
+    u.push_back(r.u[i]);
+    v.push_back(r.v[i]);
+  }
+  const FoldMeasure half = measure_folds(subset, u, v, r.noise, 2);
+  const TurnedSheets some = turned_sheets(r, judged, half, 2);
+  assert_true(some.turned > 25 && some.turned < some.judged / 4);
+  assert_int_equal(some.turned, turned_by_hand(r, judged, half));
+}
+
 void the_counts_do_not_depend_on_the_thread_count(void**) {
   const Fixture& f = fixture();
   const Result m = mirrored(f.result);
@@ -96,13 +149,17 @@ void the_counts_do_not_depend_on_the_thread_count(void**) {
   }
 }
 
-void sizes_that_do_not_match_are_refused(void**) {
+void sizes_and_indices_that_do_not_fit_are_refused(void**) {
   const Fixture& f = fixture();
   const FoldMeasure folds = measure_folds(f.points, f.result.u, f.result.v, f.result.noise, 2);
   core_test::expect_error([&] { turned_sheets(f.result, {0, 1, 2}, folds, 1); }, ErrorCode::InvalidArgument, {"turned_sheets", "3 judged points", "3000 normals"});
   FoldMeasure fewer = folds;
   fewer.right_normal.pop_back();
   core_test::expect_error([&] { turned_sheets(f.result, {}, fewer, 1); }, ErrorCode::InvalidArgument, {"turned_sheets", "2999 normals for 3000 points"});
+  std::vector<std::size_t> judged(3000);
+  for (std::size_t i = 0; i < judged.size(); ++i) judged[i] = i;
+  judged[7] = 3000;
+  core_test::expect_error([&] { turned_sheets(f.result, judged, folds, 1); }, ErrorCode::InvalidArgument, {"turned_sheets", "judged point 3000 is not one of the 3000 points"});
 }
 
 }  // namespace
@@ -112,8 +169,9 @@ int main(void) {
       cmocka_unit_test(a_surface_that_agrees_with_its_uv_turns_nothing),
       cmocka_unit_test(a_mirrored_uv_on_the_same_surface_turns_every_point),
       cmocka_unit_test(a_judged_subset_gives_the_same_verdicts),
+      cmocka_unit_test(each_point_is_judged_at_its_own_uv),
       cmocka_unit_test(the_counts_do_not_depend_on_the_thread_count),
-      cmocka_unit_test(sizes_that_do_not_match_are_refused),
+      cmocka_unit_test(sizes_and_indices_that_do_not_fit_are_refused),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
