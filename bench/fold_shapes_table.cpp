@@ -10,13 +10,14 @@
 // target used (DBS_STAT_ACCURACY); the result surface's distance to the truth, mean over the
 // points of dist(S(u_i,v_i), noise-free surface); wall time of dbs_parameterize; then the same
 // reference folds and time for the meshless reference; last, the points on a turned sheet:
-// those where the result surface's own normal Su x Sv at the point's (u,v) points against the
-// noise-free surface's normal at its true (a,b). A pleated base surface can carry points in the
+// those on the surface (within 10 times the target and a spacing) where its own normal Su x Sv
+// at the point's (u,v) points against the noise-free surface's normal at its true (a,b). A pleated base surface can carry points in the
 // right order (no folded triangle) on a sheet turned over: its normals, a mesh of S over the
 // domain and a fit to S are then wrong there (libraries before 0.4 lack the derivatives: n/a);
 // and the library's own count of them, which needs no truth (DBS_STAT_TURNED_*).
 //
 // usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--solver linear|ceres] [--density F] [--save DIR]
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -130,11 +131,14 @@ std::string count_with_share(double count, double share) {
 
 /// The points whose result surface normal (su x sv, 3 doubles a point each) points against
 /// the noise-free surface's normal at their true parameters, as "count (share%)" of the points
-/// where the noise-free normal is defined. A zero or NaN su x sv counts as turned: it has no
+/// on the surface where the noise-free normal is defined. A point farther from the surface
+/// (`distance`) than `reach` has no sheet under it and is not judged (the library's rule: 10
+/// times the target and a spacing). A zero or NaN su x sv counts as turned: it has no
 /// orientation to keep.
-std::string turned_points(const FoldShape& shape, const std::vector<double>& su, const std::vector<double>& sv) {
+std::string turned_points(const FoldShape& shape, const std::vector<double>& su, const std::vector<double>& sv, const std::vector<double>& distance, double reach) {
   std::size_t turned = 0, judged = 0;
   for (std::size_t i = 0; i < shape.count(); ++i) {
+    if (distance[i] > reach) continue;
     const dbs_folds::Point3 truth = dbs_folds::surface_normal(shape.surface, shape.uv_true[2 * i], shape.uv_true[2 * i + 1]);
     if (truth[0] == 0.0 && truth[1] == 0.0 && truth[2] == 0.0) continue;  // singular there
     const double* a = &su[3 * i];
@@ -209,7 +213,9 @@ Run run_dbs(const FoldShape& shape, const dbs_options* options) {
 #if DBS_VERSION_NUMBER >= 400
   std::vector<double> su(3 * shape.count()), sv(3 * shape.count());
   if (status == DBS_OK) status = dbs_result_evaluate_many(result, uv.data(), shape.count(), on_surface.data(), nullptr, su.data(), sv.data());
-  if (status == DBS_OK) run.turned = turned_points(shape, su, sv);
+  std::vector<double> distance(shape.count());
+  if (status == DBS_OK) status = dbs_result_distances(result, distance.data(), shape.count());
+  if (status == DBS_OK) run.turned = turned_points(shape, su, sv, distance, std::max(10.0 * stat(result, DBS_STAT_ACCURACY), stat(result, DBS_STAT_LENGTH_SCALE)));
 #else
   for (std::size_t i = 0; status == DBS_OK && i < shape.count(); ++i) status = dbs_result_evaluate(result, uv[2 * i], uv[2 * i + 1], &on_surface[3 * i], nullptr);
 #endif
@@ -269,7 +275,7 @@ int main(int argc, char** argv) {
               threads == 0 ? "all" : std::to_string(threads).c_str(), repair ? "on" : "off", solver == DBS_SOLVER_CERES ? "ceres" : "linear");
   std::printf("folds: reference triangles whose signed (u,v) area is negative or below 1e-3 of the median, as inverted+collapsed;\n"
               "to truth: mean distance of the result surface at each point's (u,v) to the noise-free surface;\n"
-              "turned: points where the result surface's normal Su x Sv points against the noise-free surface's; ref.-free turned: the library's count\n\n");
+              "turned: points on the result surface where its normal Su x Sv points against the noise-free surface's; ref.-free turned: the library's count\n\n");
   std::printf("| shape | points | triangles | levels | patches | folds | folds %% | ref.-free folds | mean distance | target | to truth | time (s) | meshless folds | meshless %% | meshless time (s) | turned | ref.-free turned |\n");
   std::printf("|-------|-------:|----------:|-------:|--------:|------:|--------:|----------------:|--------------:|-------:|---------:|---------:|---------------:|-----------:|------------------:|-------:|-----------------:|\n");
   std::fflush(stdout);

@@ -451,7 +451,7 @@ static void print_summary(const dbs_result *result, const char *result_path, dou
   printf("folds           %.2f %% of %.0f points judged (%.0f folded, %.0f undecided, %.0f sharing a (u,v))\n", 100.0 * stat_of(result, DBS_STAT_FOLDED_SHARE),
          stat_of(result, DBS_STAT_JUDGED_POINTS), stat_of(result, DBS_STAT_FOLDED_POINTS), stat_of(result, DBS_STAT_UNDECIDED_POINTS), stat_of(result, DBS_STAT_COINCIDENT_POINTS));
   printf("collapsed       %.0f of the undecided points squeezed in (u,v)\n", stat_of(result, DBS_STAT_COLLAPSED_POINTS));
-  printf("turned          %.2f %% of the judged points with a cloud normal lie on a sheet of the surface turned against it (%.0f points)\n", 100.0 * stat_of(result, DBS_STAT_TURNED_SHARE),
+  printf("turned          %.2f %% of the judged points on the surface lie on a sheet of it turned against the cloud (%.0f points)\n", 100.0 * stat_of(result, DBS_STAT_TURNED_SHARE),
          stat_of(result, DBS_STAT_TURNED_POINTS));
   if (stat_of(result, DBS_STAT_REPAIRED_POINTS) > 0.0) printf("repaired        %.0f points\n", stat_of(result, DBS_STAT_REPAIRED_POINTS));
   printf("inputs          boundary %.3g spacings from the cloud, cloud/boundary size %.3g, domain covered %.1f %%, %.0f points clamped\n",

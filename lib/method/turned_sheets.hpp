@@ -8,6 +8,10 @@
 // normal, oriented consistently over the cloud and signed by the majority of the (u,v) maps
 // of its component), so that a globally mirrored (u,v), whose surface is mirrored with it,
 // turns nothing. A zero or non-finite Su x Sv counts as turned (it has no orientation to keep).
+// Only points on the surface are judged: one farther from it than the repair's reach (10 times
+// the target and a spacing, fold_repair.hpp) has no sheet under it (the surface at its (u,v)
+// lies elsewhere, as where the surfaces never reached a feature), and its distance already
+// says what is wrong there.
 #pragma once
 #include <cstddef>
 #include <vector>
@@ -17,8 +21,12 @@
 
 namespace dbs {
 
+/// Whether point i lies farther from result's surface than the repair's reach (10 times the
+/// target used and one spacing): it is not judged.
+bool off_the_surface(const Result& result, std::size_t i);
+
 struct TurnedSheets {
-  std::size_t judged = 0;  ///< points with a right normal (the rest are not judged)
+  std::size_t judged = 0;  ///< points with a right normal that lie on the surface (the rest are not judged)
   std::size_t turned = 0;  ///< ... of them on a turned sheet
   double share = 0.0;      ///< turned / judged; 0 when none is judged
 };

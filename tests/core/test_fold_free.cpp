@@ -31,6 +31,7 @@
 #include "meshless_reference.hpp"
 #include "parameterize.hpp"
 #include "point_cloud.hpp"
+#include "turned_sheets.hpp"
 
 #include "core_test_support.hpp"
 
@@ -71,7 +72,8 @@ Run run(const FoldShape& shape, dbs::Options options = {}, double scale = 1.0) {
     const dbs_folds::Point3 truth = dbs_folds::surface_normal(shape.surface, shape.uv_true[2 * i], shape.uv_true[2 * i + 1]);
     Vec3 su, sv;
     r.result.derivatives(r.result.u[i], r.result.v[i], su, sv);
-    if (Vec3(truth[0], truth[1], truth[2]) != Vec3::Zero() && !(su.cross(sv).dot(Vec3(truth[0], truth[1], truth[2])) > 0.0)) ++r.turned_truth;
+    const bool on_surface = !dbs::off_the_surface(r.result, i);
+    if (on_surface && Vec3(truth[0], truth[1], truth[2]) != Vec3::Zero() && !(su.cross(sv).dot(Vec3(truth[0], truth[1], truth[2])) > 0.0)) ++r.turned_truth;
   }
   r.folds = dbs_folds::fold_share(uv, shape.triangles);
   r.to_truth = dbs_folds::mean_distance_to_surface(shape, on_surface);
@@ -242,15 +244,16 @@ void hard_shapes_stay_within_their_bounds(void**) {
   // by default because it keeps or lowers both figures on every shape: checked here against a
   // run without it.
   //
-  // Points on a turned sheet (the surface's Su x Sv at their (u,v) against the noise-free
-  // normal; DBS_STAT_TURNED_*), today at 4,096 points 1.56% / 6.86% / 5.30% / 0.44% / 0.22% /
-  // 0 by the truth and 1.64% / 6.86% / 4.27% / 0.25% / 0.24% / 0 by the library's own measure
-  // (which has no normal for a few points, e.g. round the fingers' tips): bounded like the
-  // folds, and the library's count must agree with the truth's within a quarter and ten points.
+  // Points on a turned sheet (on the surface, its Su x Sv at their (u,v) against the
+  // noise-free normal; DBS_STAT_TURNED_*), today at 4,096 points 1.06% / 2.31% / 2.90% / 0.44%
+  // / 0.22% / 0 by the truth and 1.13% / 2.34% / 2.33% / 0.25% / 0.24% / 0 by the library's
+  // own measure (which has no normal for a few points, e.g. round the fingers' tips): bounded
+  // like the folds, and the library's count must agree with the truth's within a quarter and
+  // ten points.
   const struct {
     const char* name;
     double max_share, max_mean, max_turned;
-  } bounds[] = {{"mushroom", 0.0005, 0.0045, 0.025}, {"tall-dome", 0.002, 0.0115, 0.08}, {"fingers", 0.0015, 0.004, 0.065},
+  } bounds[] = {{"mushroom", 0.0005, 0.0045, 0.02}, {"tall-dome", 0.002, 0.0115, 0.03}, {"fingers", 0.0015, 0.004, 0.035},
                 {"open-box", 0.002, 0.001, 0.007}, {"cone", 0.0005, 0.0008, 0.005}, {"sphere-cap", 0.001, 0.0034, 0.001}};
   dbs::Options without;
   without.repair = 0;
