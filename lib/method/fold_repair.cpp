@@ -242,7 +242,7 @@ std::vector<char> far_from_surface(const Result& result) {
     // because the boundary does not reach it, not because a surface missed it: a fill would
     // only pull it inside the domain.
     const bool outside = result.left_out(i) || (i < result.clamped.size() && result.clamped[i]);
-    far[i] = !outside && result.distance[i] > kRepairFactor * result.accuracy && result.distance[i] > kRepairSpacings * result.length_scale;
+    far[i] = !outside && beyond_repair_reach(result, i);
   }
   return far;
 }
@@ -326,6 +326,11 @@ std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>&
   std::vector<char> out(n, 0);
   for (std::size_t i = 0; i < n; ++i) out[i] = spread[i] != 0 && !result.left_out(i);
   return out;
+}
+
+bool beyond_repair_reach(const Result& result, std::size_t i) {
+  const double d = result.distance[i];
+  return d > kRepairFactor * result.accuracy && d > kRepairSpacings * result.length_scale;
 }
 
 bool repair_has_work(const Result& result, const std::vector<char>& suspect) {

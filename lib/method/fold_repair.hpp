@@ -48,6 +48,11 @@ constexpr double kRepairTrust = 0.15;          ///< step towards the foot: at mo
 constexpr double kIsolationSpacings = 3.0;      ///< a far point's neighbourhood: at least this many spacings h ...
 constexpr double kIsolationShare = 0.25;        ///< ... isolated when it holds less than this share of a sheet's points ...
 constexpr double kSheetSpacings = 8.0;          ///< ... unless it lies in a missed sheet: most of its nearest points far too, all within this many spacings h
+
+/// Whether point i of `result` lies farther from its surface than the repair's reach: more
+/// than kRepairFactor times the target used and kRepairSpacings spacings ("far" above, without
+/// the exceptions of the points outside the boundary or the body).
+bool beyond_repair_reach(const Result& result, std::size_t i);
 constexpr double kSuspectClusterShare = 0.75;    ///< an undecided point is repaired when at least this share of its neighbours are doubtful too
 constexpr double kBorderOffset = 0.4;           ///< ... and it is inside the cloud: its neighbours' centroid within this x their mean distance
 

@@ -40,7 +40,8 @@ struct Result {
   std::size_t collapsed_points = 0;  // of the undecided: neighbourhood squeezed in (u,v)
   double folded_share = 0.0;  // folded / decided points
   // Of the judged points, those on a sheet of the surface turned against the cloud
-  // (turned_sheets.hpp), and their share of the judged points the measure gives a normal.
+  // (turned_sheets.hpp), and their share of the judged points on the surface the measure
+  // gives a normal.
   std::size_t turned_points = 0;
   double turned_share = 0.0;
   int levels = 0;             // quadtree levels present (1 = root only)

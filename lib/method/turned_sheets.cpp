@@ -9,11 +9,6 @@
 
 namespace dbs {
 
-bool off_the_surface(const Result& result, std::size_t i) {
-  const double d = result.distance[i];
-  return d > kRepairFactor * result.accuracy && d > kRepairSpacings * result.length_scale;
-}
-
 TurnedSheets turned_sheets(const Result& result, const std::vector<std::size_t>& judged, const FoldMeasure& folds, int threads) {
   const std::size_t n = folds.right_normal.size();
   if (!judged.empty() && judged.size() != n)
@@ -29,7 +24,7 @@ TurnedSheets turned_sheets(const Result& result, const std::vector<std::size_t>&
     const Vec3& right = folds.right_normal[k];
     if (right.isZero()) return;
     const std::size_t i = judged.empty() ? k : judged[k];
-    if (off_the_surface(result, i)) return;
+    if (beyond_repair_reach(result, i)) return;
     Vec3 su, sv;
     result.derivatives(result.u[i], result.v[i], su, sv);
     verdict[k] = su.cross(sv).dot(right) > 0.0 ? 1 : 2;

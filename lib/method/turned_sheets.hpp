@@ -9,7 +9,7 @@
 // of its component), so that a globally mirrored (u,v), whose surface is mirrored with it,
 // turns nothing. A zero or non-finite Su x Sv counts as turned (it has no orientation to keep).
 // Only points on the surface are judged: one farther from it than the repair's reach (10 times
-// the target and a spacing, fold_repair.hpp) has no sheet under it (the surface at its (u,v)
+// the target and a spacing, beyond_repair_reach in fold_repair.hpp) has no sheet under it (the surface at its (u,v)
 // lies elsewhere, as where the surfaces never reached a feature), and its distance already
 // says what is wrong there.
 #pragma once
@@ -17,13 +17,10 @@
 #include <vector>
 
 #include "fold_measure.hpp"
+#include "fold_repair.hpp"
 #include "result.hpp"
 
 namespace dbs {
-
-/// Whether point i lies farther from result's surface than the repair's reach (10 times the
-/// target used and one spacing): it is not judged.
-bool off_the_surface(const Result& result, std::size_t i);
 
 struct TurnedSheets {
   std::size_t judged = 0;  ///< points with a right normal that lie on the surface (the rest are not judged)

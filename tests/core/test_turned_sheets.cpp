@@ -98,7 +98,7 @@ std::vector<Vec3> points_of(const std::vector<double>& xyz) {
 std::size_t turned_by_hand(const Result& r, const std::vector<std::size_t>& judged, const FoldMeasure& folds) {
   std::size_t turned = 0;
   for (std::size_t k = 0; k < judged.size(); ++k) {
-    if (folds.right_normal[k].isZero() || off_the_surface(r, judged[k])) continue;
+    if (folds.right_normal[k].isZero() || beyond_repair_reach(r, judged[k])) continue;
     Vec3 su, sv;
     r.derivatives(r.u[judged[k]], r.v[judged[k]], su, sv);
     turned += su.cross(sv).dot(folds.right_normal[k]) > 0.0 ? 0 : 1;
