@@ -127,7 +127,8 @@ int dbs_result_repaired(const dbs_result* result, int32_t* out, size_t capacity)
   });
 }
 
-static_assert(DBS_POINT_REPAIRED == dbs::kPointRepaired && DBS_POINT_FAR == dbs::kPointFar && DBS_POINT_CLAMPED == dbs::kPointClamped && DBS_POINT_CROPPED == dbs::kPointCropped,
+static_assert(DBS_POINT_REPAIRED == dbs::kPointRepaired && DBS_POINT_FAR == dbs::kPointFar && DBS_POINT_CLAMPED == dbs::kPointClamped && DBS_POINT_CROPPED == dbs::kPointCropped &&
+                  DBS_POINT_TURNED == dbs::kPointTurned,
               "DBS_POINT_* and dbs::PointFlag must agree");
 
 int dbs_result_point_flags(const dbs_result* result, int32_t* out, size_t capacity) {

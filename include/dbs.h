@@ -533,6 +533,7 @@ DBS_API int dbs_result_repaired(const dbs_result *result, int32_t *out, size_t c
 #define DBS_POINT_FAR 2      /* far outside the cloud's body (DBS_STAT_FAR_POINTS): took the (u,v) of its nearest point of the body, or was cropped */
 #define DBS_POINT_CLAMPED 4  /* outside the boundary (DBS_STAT_CLAMPED_POINTS): its foot, before the repair, lay on the domain's edge more than a point spacing from the surface */
 #define DBS_POINT_CROPPED 8  /* cropped (DBS_OPT_CROP): u, v and distance NaN, patch and level -1 */
+#define DBS_POINT_TURNED 16  /* \since 0.4: one of the DBS_STAT_TURNED_POINTS: judged by the fold measure, on the surface, and on a sheet of it turned against the cloud (points the measure does not judge, beyond 20,000, carry no verdict) */
 /** The DBS_POINT_* bits of each point, in input order, into `out`, which holds `capacity` values (at least the point count).
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_BUFFER_TOO_SMALL. \since 0.4 */
 DBS_API int dbs_result_point_flags(const dbs_result *result, int32_t *out, size_t capacity);

@@ -219,6 +219,8 @@ class Driver {
     const TurnedSheets turned = turned_sheets(result_, judged, folds, threads_);
     result_.turned_points = turned.turned;
     result_.turned_share = turned.share;
+    result_.turned.assign(points_.size(), 0);
+    for (std::size_t i : turned.points) result_.turned[i] = 1;
     result_.stage_seconds.folds += seconds_since(folds_start);
     // The last judge is made: the neighbourhoods kept for the judges go (up to tens of MB).
     judged_neighbourhoods_.reset();

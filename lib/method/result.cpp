@@ -29,6 +29,7 @@ std::vector<std::int32_t> Result::point_flags() const {
   set(outside_body, kPointFar);
   set(clamped, kPointClamped);
   set(cropped, kPointCropped);
+  set(turned, kPointTurned);
   return flags;
 }
 

@@ -14,6 +14,7 @@ enum PointFlag : std::int32_t {
   kPointFar = 2,       ///< far outside the cloud's body (Result::outside_body)
   kPointClamped = 4,   ///< outside the boundary (Result::clamped)
   kPointCropped = 8,   ///< cropped (Result::cropped)
+  kPointTurned = 16,   ///< judged on a turned sheet of the surface (Result::turned)
 };
 
 struct Result {
@@ -44,6 +45,7 @@ struct Result {
   // gives a normal.
   std::size_t turned_points = 0;
   double turned_share = 0.0;
+  std::vector<char> turned;  // per point: 1 for those turned_points (empty until measured)
   int levels = 0;             // quadtree levels present (1 = root only)
   int iterations = 0;         // grid evolutions over all patches
   int solver = 0;             // the solver that ran (Solver: 0 linear, 1 Ceres)

@@ -30,10 +30,11 @@ TurnedSheets turned_sheets(const Result& result, const std::vector<std::size_t>&
     verdict[k] = su.cross(sv).dot(right) > 0.0 ? 1 : 2;
   });
   TurnedSheets out;
-  for (char c : verdict) {
-    out.judged += c != 0;
-    out.turned += c == 2;
+  for (std::size_t k = 0; k < n; ++k) {
+    out.judged += verdict[k] != 0;
+    if (verdict[k] == 2) out.points.push_back(judged.empty() ? k : judged[k]);
   }
+  out.turned = out.points.size();
   out.share = out.judged == 0 ? 0.0 : static_cast<double>(out.turned) / static_cast<double>(out.judged);
   return out;
 }

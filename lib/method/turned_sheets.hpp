@@ -26,6 +26,7 @@ struct TurnedSheets {
   std::size_t judged = 0;  ///< points with a right normal that lie on the surface (the rest are not judged)
   std::size_t turned = 0;  ///< ... of them on a turned sheet
   double share = 0.0;      ///< turned / judged; 0 when none is judged
+  std::vector<std::size_t> points;  ///< the turned ones, indices of the result's points, in judged order
 };
 
 /// The points of `folds` (the fold measure of result's (u,v) on the points `judged`, indices

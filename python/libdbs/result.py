@@ -115,7 +115,7 @@ class Result(_Handle):
 
     @property
     def flags(self) -> np.ndarray:
-        """(N,) int32: the POINT_* bits of each point (repaired, far, clamped, cropped)."""
+        """(N,) int32: the POINT_* bits of each point (repaired, far, clamped, cropped, turned)."""
         return self._values(lib.dbs_result_point_flags, np.int32)
 
     def stat(self, stat: "Stat | int | str") -> float:

@@ -438,6 +438,14 @@ void far_points_leave_the_turned_count_alone(void**) {
   assert_true(plain.turned_points > 50);
   assert_int_equal(with_far.turned_points, plain.turned_points);
   assert_true(with_far.turned_share == plain.turned_share);
+  const std::vector<std::int32_t> flags = with_far.point_flags(), plain_flags = plain.point_flags();
+  std::size_t flagged = 0;
+  for (std::size_t i = 0; i < plain.u.size(); ++i) {
+    assert_int_equal(flags[i] & dbs::kPointTurned, plain_flags[i] & dbs::kPointTurned);
+    flagged += (flags[i] & dbs::kPointTurned) != 0;
+  }
+  assert_int_equal(flagged, plain.turned_points);
+  for (std::size_t i = plain.u.size(); i < flags.size(); ++i) assert_int_equal(flags[i], dbs::kPointFar);  // far points are not judged
 }
 
 int main(int argc, char** argv) {

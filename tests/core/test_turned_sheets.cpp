@@ -6,6 +6,7 @@
 // point's own (u,v) and normal, for a subset too, and parameterize reports the same count;
 // the counts do not depend on the thread count; sizes and indices that do not fit are refused.
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "analytic_clouds.hpp"
@@ -116,6 +117,13 @@ void each_point_is_judged_at_its_own_uv(void**) {
   const TurnedSheets whole = turned_sheets(r, {}, all, 2);
   assert_int_equal(whole.turned, r.turned_points);
   assert_true(whole.share == r.turned_share);
+  // ... and its flags are those points, each once.
+  assert_int_equal(whole.points.size(), whole.turned);
+  const std::vector<std::int32_t> flags = r.point_flags();
+  std::size_t flagged = 0;
+  for (std::size_t i = 0; i < flags.size(); ++i) flagged += (flags[i] & kPointTurned) != 0;
+  assert_int_equal(flagged, whole.turned);
+  for (std::size_t i : whole.points) assert_true((flags[i] & kPointTurned) != 0);
   // Some turned, most not: a verdict read at another point's (u,v) would change the count.
   assert_true(whole.turned > 50 && whole.turned < whole.judged / 4);
   std::vector<std::size_t> every(points.size());
@@ -135,6 +143,7 @@ void each_point_is_judged_at_its_own_uv(void**) {
   const TurnedSheets some = turned_sheets(r, judged, half, 2);
   assert_true(some.turned > 25 && some.turned < some.judged / 4);
   assert_int_equal(some.turned, turned_by_hand(r, judged, half));
+  for (std::size_t i : some.points) assert_true(i % 2 == 1);  // indices of the result, not of the subset
 }
 
 void the_counts_do_not_depend_on_the_thread_count(void**) {
