@@ -17,6 +17,7 @@ constexpr Rgb kGrid = {60, 60, 60};
 constexpr Rgb kFolded = {230, 0, 200};
 constexpr Rgb kSuspicious = {0, 0, 0};
 constexpr Rgb kDegenerate = {150, 150, 150};
+constexpr Rgb kTurned = {255, 140, 0};
 
 std::string format(double value) { return significant_text(value, 3); }
 
@@ -85,7 +86,7 @@ Rgb ramp_colour(double t) {
   return c;
 }
 
-RgbImage draw_parameter_domain(const std::vector<double>& u, const std::vector<double>& v, const std::vector<Triangle>& triangles, const std::vector<TriangleDistortion>& distortion, const std::vector<std::size_t>& suspicious, const std::vector<Rect>& leaves, int size) {
+RgbImage draw_parameter_domain(const std::vector<double>& u, const std::vector<double>& v, const std::vector<Triangle>& triangles, const std::vector<TriangleDistortion>& distortion, const std::vector<std::size_t>& suspicious, const std::vector<std::size_t>& turned, const std::vector<Rect>& leaves, int size) {
   if (distortion.size() != triangles.size()) fail(ErrorCode::InvalidArgument, "draw_parameter_domain: " + std::to_string(distortion.size()) + " distortion entries for " + std::to_string(triangles.size()) + " triangles");
   if (size < 200) fail(ErrorCode::OutOfRange, "draw_parameter_domain: size " + std::to_string(size) + " (at least 200)");
   const int margin = size / 25, title = 24, legend = 64;
@@ -135,6 +136,14 @@ RgbImage draw_parameter_domain(const std::vector<double>& u, const std::vector<d
     int y0 = top + static_cast<int>(std::lround((1.0 - r.v1) * plot)), y1 = top + static_cast<int>(std::lround((1.0 - r.v0) * plot));
     frame_rect(image, x0, y0, std::min(x1, left + plot), std::min(y1, top + plot), kGrid);
   }
+  // The turned points last, over the leaves' lines.
+  for (std::size_t i : turned) {
+    if (i >= u.size()) fail(ErrorCode::InvalidArgument, "draw_parameter_domain: turned point " + std::to_string(i) + " is not one of the " + std::to_string(u.size()) + " points");
+    double x = 0.0, y = 0.0;
+    to_pixel(static_cast<std::int32_t>(i), x, y);
+    const int cx = static_cast<int>(std::floor(x)), cy = static_cast<int>(std::floor(y));
+    fill_rect(image, cx - 1, cy - 1, cx + 2, cy + 2, kTurned);
+  }
   draw_text(image, left, 8, "PARAMETER DOMAIN (U RIGHT, V UP): CONFORMAL DISTORTION", kInk);
 
   // Legend: the colour ramp with ticks, then the marks.
@@ -148,7 +157,7 @@ RgbImage draw_parameter_domain(const std::vector<double>& u, const std::vector<d
   }
   const int marks_top = bar_top + bar_height + 20;
   int x = left;
-  for (auto [name, colour] : {std::pair<const char*, Rgb>{"FOLDED", kFolded}, {"SUSPICIOUS", kSuspicious}, {"DEGENERATE", kDegenerate}, {"LEAF PATCHES", kGrid}}) {
+  for (auto [name, colour] : {std::pair<const char*, Rgb>{"FOLDED", kFolded}, {"TURNED", kTurned}, {"SUSPICIOUS", kSuspicious}, {"DEGENERATE", kDegenerate}, {"LEAF PATCHES", kGrid}}) {
     if (std::string(name) == "LEAF PATCHES") frame_rect(image, x, marks_top, x + 10, marks_top + 8, colour);
     else fill_rect(image, x, marks_top, x + 11, marks_top + 9, colour);
     draw_text(image, x + 16, marks_top + 1, name, kInk);

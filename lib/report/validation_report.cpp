@@ -106,7 +106,10 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   std::vector<Rect> leaves;
   for (const Patch& p : result.patches)
     if (p.is_leaf()) leaves.push_back(p.rect);
-  write_png(base + "domain.png", draw_parameter_domain(result.u, result.v, mesh.triangles, per_axis.triangles, mesh.suspicious, leaves, kDomainSize));
+  std::vector<std::size_t> turned;
+  for (std::size_t i = 0; i < result.turned.size(); ++i)
+    if (result.turned[i]) turned.push_back(i);
+  write_png(base + "domain.png", draw_parameter_domain(result.u, result.v, mesh.triangles, per_axis.triangles, mesh.suspicious, turned, leaves, kDomainSize));
   // The distances the statistics count: not those of points far outside the body or cropped.
   write_png(base + "distances.png", draw_distance_histogram(result.counted_distances(), distances.overall, distances.tolerance, kHistogramWidth, kHistogramHeight));
   const double picture_seconds = clock.lap();

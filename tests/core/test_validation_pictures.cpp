@@ -125,7 +125,8 @@ void test_parameter_domain(void**) {
   const std::vector<dbs::Rect> leaves{{0, 0, 0.5, 1}, {0.5, 0, 1, 1}};
   const std::vector<std::size_t> suspicious{31};  // a triangle of the cell at (u,v) near (1,1)
   const int size = 400;
-  const dbs::RgbImage image = dbs::draw_parameter_domain(u, v, triangles, distortion, suspicious, leaves, size);
+  const std::vector<std::size_t> turned{6};  // the point (1, 1) of the 5 x 5 grid, (u,v) = (0.25, 0.25)
+  const dbs::RgbImage image = dbs::draw_parameter_domain(u, v, triangles, distortion, suspicious, turned, leaves, size);
   assert_int_equal(image.width(), size);
   assert_true(image.height() > size);
   // the plot: margin 16, title 24 -> (u,v) at (16 + 368 u, 40 + 368 (1 - v))
@@ -136,6 +137,8 @@ void test_parameter_domain(void**) {
   assert_true((at(0.95, 0.8) == dbs::ramp_colour(0.0)));  // its neighbour 30 below the diagonal
   assert_true(brightness(image.at(16 + 184, 40 + 100)) < 80);  // the leaves' shared side u = 0.5
   assert_true((image.at(2, 60) == Rgb{255, 255, 255}));     // outside the plot
+  assert_true((at(0.25, 0.25) == Rgb{255, 140, 0}));          // the turned point, an orange dot
+  assert_true((at(0.25 + 3.0 / 368, 0.25) != Rgb{255, 140, 0}));  // ... of 3 x 3 pixels only
 }
 
 void test_histogram(void**) {
