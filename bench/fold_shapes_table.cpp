@@ -11,10 +11,12 @@
 // points of dist(S(u_i,v_i), noise-free surface); wall time of dbs_parameterize; then the same
 // reference folds and time for the meshless reference; last, the points on a turned sheet:
 // those on the surface (within 10 times the target and a spacing) where its own normal Su x Sv
-// at the point's (u,v) points against the noise-free surface's normal at its true (a,b). A pleated base surface can carry points in the
-// right order (no folded triangle) on a sheet turned over: its normals, a mesh of S over the
-// domain and a fit to S are then wrong there (libraries before 0.4 lack the derivatives: n/a);
-// and the library's own count of them, which needs no truth (DBS_STAT_TURNED_*).
+// at the point's (u,v) points against the noise-free surface's normal at its true (a,b). A
+// pleated base surface can carry points in the right order (no folded triangle) on a sheet
+// turned over: its normals, a mesh of S over the domain and a fit to S are then wrong there
+// (libraries before 0.4 lack the derivatives: n/a); and the library's own count of them, which
+// needs no truth (DBS_STAT_TURNED_*). The bench repeats the library's "on the surface" rule
+// (beyond_repair_reach) from the statistics, as it sees the C API only.
 //
 // usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--solver linear|ceres] [--density F] [--save DIR]
 #include <algorithm>

@@ -72,8 +72,8 @@ Run run(const FoldShape& shape, dbs::Options options = {}, double scale = 1.0) {
     const dbs_folds::Point3 truth = dbs_folds::surface_normal(shape.surface, shape.uv_true[2 * i], shape.uv_true[2 * i + 1]);
     Vec3 su, sv;
     r.result.derivatives(r.result.u[i], r.result.v[i], su, sv);
-    const bool on_surface = !dbs::beyond_repair_reach(r.result, i);
-    if (on_surface && Vec3(truth[0], truth[1], truth[2]) != Vec3::Zero() && !(su.cross(sv).dot(Vec3(truth[0], truth[1], truth[2])) > 0.0)) ++r.turned_truth;
+    const bool reached = !dbs::beyond_repair_reach(r.result, i);  // turned sheets are judged on the surface only
+    if (reached && Vec3(truth[0], truth[1], truth[2]) != Vec3::Zero() && !(su.cross(sv).dot(Vec3(truth[0], truth[1], truth[2])) > 0.0)) ++r.turned_truth;
   }
   r.folds = dbs_folds::fold_share(uv, shape.triangles);
   r.to_truth = dbs_folds::mean_distance_to_surface(shape, on_surface);
