@@ -3,6 +3,7 @@
 #include <functional>
 #include <vector>
 
+#include "ray_cloud.hpp"
 #include "robust_loss.hpp"
 
 namespace dbs {
@@ -60,6 +61,8 @@ struct Options {
   /// For tests: called before each progress report with its stage and the work units
   /// (points projected, grid nodes solved) counted so far in the run.
   std::function<void(const char* stage, unsigned long long units)> work_probe;
+  /// For tests: a patch's rays see at most about this many of its points (ray_cloud.hpp).
+  std::size_t max_ray_points = kMaxRayPoints;
 };
 
 /// Option identifiers; values equal the DBS_OPT_* numbers of the C API.

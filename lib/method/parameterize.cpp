@@ -21,6 +21,7 @@
 #include "parallel.hpp"
 #include "progress.hpp"
 #include "repair_snapshot.hpp"
+#include "ray_cloud.hpp"
 #include "subcloud.hpp"
 #include "robust_loss.hpp"
 #include "subdivide.hpp"
@@ -268,14 +269,25 @@ class Driver {
     }
     settings.threads = std::max(1, threads_ / std::max(outer, 1));
     settings.meter = &meter_;
+    // A dense patch's rays see an even sample of its points (ray_cloud.hpp).
+    std::vector<RayCloud> ray_clouds;
     std::uint64_t expected = 0;
-    for (int id : ids) expected += evolve_work(result_.patches[id].subcloud.size()) + (id == 0 ? 0 : index_build_work(result_.patches[id].subcloud.size()));
+    for (int id : ids) {
+      const Patch& patch = result_.patches[id];
+      ray_clouds.push_back(ray_cloud(patch.subcloud, result_.length_scale, options_.max_ray_points));
+      const std::size_t rays_see = ray_clouds.back().sampled() ? ray_clouds.back().points.size() : patch.subcloud.size();
+      expected += evolve_work(rays_see) + (id == 0 && !ray_clouds.back().sampled() ? 0 : index_build_work(rays_see));
+    }
     begin_stage("evolve", begin, begin + 0.8 * (end - begin), expected);
     meter_.run(ids.size(), outer, [&](std::size_t k) {
       Patch& patch = result_.patches[ids[k]];
       const bool root = patch.parent < 0;
-      if (!root) indices[k] = std::make_unique<CloudIndex>(points_, patch.subcloud, IndexBuild{settings.threads, &meter_});
-      projectors[k] = std::make_unique<DirectedProjector>(root ? *cloud_index_ : *indices[k], result_.length_scale);
+      RayCloud& rays = ray_clouds[k];
+      const IndexBuild build{settings.threads, &meter_};
+      if (rays.sampled()) indices[k] = std::make_unique<CloudIndex>(points_, rays.points, build);
+      else if (!root) indices[k] = std::make_unique<CloudIndex>(points_, patch.subcloud, build);
+      PointList().swap(rays.points);  // the index holds its own copy
+      projectors[k] = std::make_unique<DirectedProjector>(indices[k] ? *indices[k] : *cloud_index_, rays.length_scale);
       // Only the root starts far from the cloud, from the Coons patch of its boundary.
       if (root) evolve_patch_with_restart(patch, points_, *projectors[k], settings);
       else evolve_patch(patch, points_, *projectors[k], settings);
