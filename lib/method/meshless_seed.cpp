@@ -11,18 +11,11 @@
 
 #include "cloud_index.hpp"
 #include "grid_fit.hpp"
+#include "index_hash.hpp"
 
 namespace dbs {
 
 namespace {
-
-/// splitmix64's finalizer: consecutive k spread over all 64 bits.
-std::uint64_t mixed(std::uint64_t k) {
-  k += 0x9e3779b97f4a7c15ULL;
-  k = (k ^ (k >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  k = (k ^ (k >> 27)) * 0x94d049bb133111ebULL;
-  return k ^ (k >> 31);
-}
 
 /// The local (u,v) of the boundary position nearest q: sides bottom (s,0), right (1,s), top
 /// (s,1), left (0,s), s the arc-length fraction along the side.
@@ -174,7 +167,7 @@ bool seed_from_meshless_map(Patch& patch, const std::vector<Vec3>& points, int g
   const std::uint64_t keep_one_in = (n + kSeedPoints - 1) / kSeedPoints;
   std::vector<Vec3> sample;
   for (std::size_t k = 0; k < n; ++k)
-    if (keep_one_in == 1 || mixed(k) % keep_one_in == 0) sample.push_back(points[patch.subcloud[k]]);
+    if (keep_one_in == 1 || index_hash(k) % keep_one_in == 0) sample.push_back(points[patch.subcloud[k]]);
   if (sample.size() < 4 * kSeedNeighbours) return false;
   const std::size_t m = sample.size();
   const CloudIndex index(sample);

@@ -3,19 +3,9 @@
 #include <cmath>
 #include <cstdint>
 
+#include "index_hash.hpp"
+
 namespace dbs {
-
-namespace {
-
-/// SplitMix64's finalizer: consecutive indices map to unrelated, evenly spread values.
-std::uint64_t mix(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
-}  // namespace
 
 RayCloud ray_cloud(const PointList& subcloud, double h, std::size_t max_points) {
   const std::size_t n = subcloud.size();
@@ -26,7 +16,7 @@ RayCloud ray_cloud(const PointList& subcloud, double h, std::size_t max_points) 
   RayCloud sample{PointList(), h};
   sample.points.reserve(max_points + max_points / 8);
   for (std::uint32_t i : subcloud)
-    if ((mix(i) >> 11) < below) sample.points.push_back(i);
+    if ((index_hash(i) >> 11) < below) sample.points.push_back(i);
   // Nothing kept (a tiny fraction of a small list): the subcloud is taken whole.
   if (sample.points.empty()) return RayCloud{PointList(), h};
   sample.length_scale = h * std::sqrt(static_cast<double>(n) / static_cast<double>(sample.points.size()));
