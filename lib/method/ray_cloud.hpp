@@ -25,12 +25,12 @@ namespace dbs {
 constexpr std::size_t kMaxRayPoints = std::size_t{1} << 15;
 
 struct RayCloud {
-  PointList points;     // the sample (ascending subcloud order); empty when the subcloud is taken whole
+  PointList points;     // the sample, in the subcloud's order; empty when the subcloud is taken whole
   double length_scale;  // h of the points the rays see
   bool sampled() const { return !points.empty(); }
 };
 
-/// The sample of `subcloud` (cloud spacing h > 0) for a patch's rays; `max_points` >= 1.
+/// The sample of `subcloud` (cloud spacing h > 0) for a patch's rays; `max_points` 0: no bound.
 RayCloud ray_cloud(const PointList& subcloud, double h, std::size_t max_points = kMaxRayPoints);
 
 }  // namespace dbs
