@@ -49,6 +49,20 @@ inline Surface height_field() {
   return [](double x, double y) { return Vec3(x, y, 0.2 * std::sin(M_PI * x) * std::sin(M_PI * y)); };
 }
 
+/// The height field with a narrow bump near (0.75, 0.7) that one patch cannot follow.
+inline Surface bumpy_field() {
+  return [](double x, double y) {
+    const double r2 = (x - 0.75) * (x - 0.75) + (y - 0.7) * (y - 0.7);
+    return Vec3(x, y, 0.2 * std::sin(M_PI * x) * std::sin(M_PI * y) + 0.12 * std::exp(-r2 / 0.006));
+  };
+}
+
+/// The bumpy field plus ripples of wavelength 0.25 that an 11 x 11 grid cannot follow, so the
+/// root must subdivide everywhere.
+inline Surface rippled_bumpy_field() {
+  return [](double x, double y) { return Vec3(bumpy_field()(x, y) + Vec3(0, 0, 0.03 * std::sin(8 * M_PI * x) * std::sin(8 * M_PI * y))); };
+}
+
 /// A rigid motion followed by a uniform scale.
 inline Vec3 move_and_scale(const Vec3& p, double scale) {
   const Eigen::Matrix3d r = (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized())).toRotationMatrix();

@@ -29,20 +29,6 @@ using namespace dbs_test;
 
 namespace {
 
-/// The height field with a narrow bump near (0.75, 0.7) that one patch cannot follow.
-Surface bumpy() {
-  return [](double x, double y) {
-    const double r2 = (x - 0.75) * (x - 0.75) + (y - 0.7) * (y - 0.7);
-    return Vec3(x, y, 0.2 * std::sin(M_PI * x) * std::sin(M_PI * y) + 0.12 * std::exp(-r2 / 0.006));
-  };
-}
-
-/// The bumpy field plus ripples of wavelength 0.25 that an 11 x 11 grid cannot follow, so the
-/// root must subdivide everywhere.
-Surface rippled() {
-  return [](double x, double y) { return Vec3(bumpy()(x, y) + Vec3(0, 0, 0.03 * std::sin(8 * M_PI * x) * std::sin(8 * M_PI * y))); };
-}
-
 Options recursive(int threads = 2) {
   Options o;
   o.relative_accuracy = 2e-4;
@@ -102,7 +88,7 @@ double worst_seam_gap(const Result& r, int samples) {
 /// The bumpy field's random points, then points on the boundary polylines themselves
 /// (from `first_side` on, four per step: bottom, right, top, left).
 std::vector<Vec3> bumpy_points(const Boundary& boundary, std::size_t& first_side) {
-  std::vector<Vec3> pts = random_points(bumpy(), 15000, 11);
+  std::vector<Vec3> pts = random_points(bumpy_field(), 15000, 11);
   first_side = pts.size();
   for (int k = 1; k < 40; ++k) {
     const double t = k / 40.0;
@@ -120,7 +106,7 @@ void repair_leaves_a_reached_cloud_as_it_is(void**) {
   // would move the surface away from most of its points, so the refit is not kept and they
   // go back to their feet: the result is the one without the repair, bit for bit, seams
   // shared exactly and every distance that of the surface at the point's (u,v).
-  const Boundary boundary = boundary_of(bumpy(), 40);
+  const Boundary boundary = boundary_of(bumpy_field(), 40);
   std::size_t first_side = 0;
   const std::vector<Vec3> pts = bumpy_points(boundary, first_side);
   const PointCloud cloud(pts);
@@ -149,7 +135,7 @@ void seams_agree_and_points_are_placed_once(void**) {
   // A2 itself: the repair (which gives some points a (u,v) other than their foot) is off.
   // Points on the boundary polylines themselves are included (the analytic sides differ
   // from their polylines by the chord error).
-  const Boundary boundary = boundary_of(bumpy(), 40);
+  const Boundary boundary = boundary_of(bumpy_field(), 40);
   std::size_t first_side = 0;
   const std::vector<Vec3> pts = bumpy_points(boundary, first_side);
   const PointCloud cloud(pts);
@@ -279,8 +265,8 @@ std::size_t folded(const GridCloud& g, const Result& r) {
 }
 
 void large_hole_does_not_fold(void**) {
-  const GridCloud g = grid_cloud(bumpy(), uniform(120), uniform(120), [](double a, double b) { return std::hypot(a - 0.45, b - 0.4) > 0.22; }, 0.0, 1);
-  const Result r = parameterize(PointCloud(g.points), boundary_of(bumpy(), 40), recursive());
+  const GridCloud g = grid_cloud(bumpy_field(), uniform(120), uniform(120), [](double a, double b) { return std::hypot(a - 0.45, b - 0.4) > 0.22; }, 0.0, 1);
+  const Result r = parameterize(PointCloud(g.points), boundary_of(bumpy_field(), 40), recursive());
   assert_true(r.levels >= 2);
   assert_int_equal(folded(g, r), 0);
   assert_true(r.mean_distance <= r.accuracy);
@@ -290,7 +276,7 @@ void patches_over_a_hole_stay_empty_and_do_not_fold(void**) {
   // The ripples make the patches subdivide; the hole swallows whole patches,
   // which get no points and keep their parent's shape: not exactly, as their sides include
   // the parent's middle curves, projected onto the points around the hole.
-  const Surface s = rippled();
+  const Surface s = rippled_bumpy_field();
   const GridCloud g = grid_cloud(s, uniform(241), uniform(241), [](double a, double b) { return std::hypot(a - 0.4, b - 0.4) > 0.28; }, 0.0, 4, 2);
   const Boundary boundary = boundary_of(s, 40);
   Options o = recursive();
@@ -324,7 +310,7 @@ void thick_cloud_does_not_fold(void**) {
   // reference triangles join every 4th point (edges about 5 noise deviations long): finer
   // ones would fold in the cloud itself, whatever the parameterization.
   const double size = std::sqrt(2.0), noise = 0.005 * size;
-  const Surface sharp = rippled();  // one patch cannot reach the target
+  const Surface sharp = rippled_bumpy_field();  // one patch cannot reach the target
   const GridCloud g = grid_cloud(sharp, uniform(109), uniform(109), [](double, double) { return true; }, noise, 2, 4);
   Options o = recursive();
   o.accuracy = noise;  // the mean absolute noise is 0.8 sigma
@@ -340,10 +326,10 @@ void density_change_does_not_fold(void**) {
   for (double a = 0.0; a < 0.3; a += 0.3 / 300) as.push_back(a);
   for (double a = 0.3; a < 1.0; a += 0.3 / 10) as.push_back(a);
   as.push_back(1.0);
-  const GridCloud g = grid_cloud(bumpy(), as, uniform(60), [](double, double) { return true; }, 0.0, 3);
+  const GridCloud g = grid_cloud(bumpy_field(), as, uniform(60), [](double, double) { return true; }, 0.0, 3);
   Options o = recursive();
   o.relative_accuracy = 1e-4;  // one patch does not reach it
-  const Result r = parameterize(PointCloud(g.points), boundary_of(bumpy(), 40), o);
+  const Result r = parameterize(PointCloud(g.points), boundary_of(bumpy_field(), 40), o);
   std::printf("density change: %d levels, %zu leaves, mean distance %.3g, target %.3g\n", r.levels, r.leaf_count(), r.mean_distance, r.accuracy);
   assert_true(r.levels >= 2);
   assert_int_equal(folded(g, r), 0);
@@ -354,7 +340,7 @@ void quadtree_is_invariant_to_scale_and_rigid_motion(void**) {
   // Every limit is relative (the accuracy to the cloud's box, the subcloud limits to the
   // child's box, both boxes in the frame of the corners; distances to the length scale), so
   // the same quadtree and (u,v) come out.
-  const Surface s = bumpy();
+  const Surface s = bumpy_field();
   const Surface moved = [&](double a, double b) { return move_and_scale(s(a, b), 1000.0); };
   const Result a = parameterize(PointCloud(random_points(s, 8000, 19)), boundary_of(s, 40), recursive());
   const Result b = parameterize(PointCloud(random_points(moved, 8000, 19)), boundary_of(moved, 40), recursive());
@@ -375,8 +361,8 @@ void quadtree_is_invariant_to_scale_and_rigid_motion(void**) {
 }
 
 void thread_count_does_not_change_output(void**) {
-  const PointCloud cloud(random_points(bumpy(), 12000, 13));
-  const Boundary boundary = boundary_of(bumpy(), 40);
+  const PointCloud cloud(random_points(bumpy_field(), 12000, 13));
+  const Boundary boundary = boundary_of(bumpy_field(), 40);
   const Result a = parameterize(cloud, boundary, recursive(1));
   const Result b = parameterize(cloud, boundary, recursive(2));
   const Result c = parameterize(cloud, boundary, recursive(5));
@@ -391,8 +377,8 @@ void thread_count_does_not_change_output(void**) {
 }
 
 void callbacks_in_order_and_cancel_everywhere(void**) {
-  const PointCloud cloud(random_points(bumpy(), 4000, 17));
-  const Boundary boundary = boundary_of(bumpy(), 30);
+  const PointCloud cloud(random_points(bumpy_field(), 4000, 17));
+  const Boundary boundary = boundary_of(bumpy_field(), 30);
   Options o = recursive();
   std::vector<double> fractions;
   std::vector<std::string> stages;
