@@ -17,12 +17,31 @@ namespace {
 /// handing them out costs nothing.
 constexpr std::size_t kBlocksPerWorker = 16;
 
+/// The units a worker of run() gathered for `meter` and not yet added (WorkMeter::kWorkerBatch).
+/// Set only while that worker drains its blocks, so the adds of any other thread (a nested
+/// parallel_for's) go straight to the shared count, and none is left behind after run().
+struct WorkerBatch {
+  const WorkMeter* meter = nullptr;
+  std::uint64_t pending = 0;
+};
+thread_local WorkerBatch worker_batch;
+
 }  // namespace
 
 WorkMeter::WorkMeter(std::uint64_t report_every) : report_every_(std::max<std::uint64_t>(report_every, 1)), caller_(std::this_thread::get_id()) {}
 
 void WorkMeter::add(std::uint64_t units) {
   if (cancelled()) fail(ErrorCode::Cancelled, "cancelled while working");
+  if (worker_batch.meter == this) {
+    worker_batch.pending += units;
+    if (worker_batch.pending < kWorkerBatch) return;
+    units = worker_batch.pending;
+    worker_batch.pending = 0;
+  }
+  add_now(units);
+}
+
+void WorkMeter::add_now(std::uint64_t units) {
   const std::uint64_t before = done_.fetch_add(units, std::memory_order_relaxed);
   if ((before + units) / report_every_ == before / report_every_) return;
   if (std::this_thread::get_id() == caller_) {
@@ -80,8 +99,17 @@ void WorkMeter::run(std::size_t n, int threads, const std::function<void(std::si
   const std::size_t block = std::max<std::size_t>(1, n / (workers * kBlocksPerWorker));
   std::atomic<std::size_t> next{0};
   auto drain = [&] {
-    for (std::size_t begin; (begin = next.fetch_add(block)) < n;)
+    struct Batching {
+      WorkerBatch saved = worker_batch;
+      explicit Batching(const WorkMeter* meter) { worker_batch = {meter, 0}; }
+      ~Batching() { worker_batch = saved; }
+    } batching(this);
+    for (std::size_t begin; (begin = next.fetch_add(block)) < n;) {
       for (std::size_t i = begin; i < std::min(n, begin + block); ++i) body(i);
+      const std::uint64_t pending = worker_batch.pending;
+      worker_batch.pending = 0;
+      if (pending > 0) add_now(pending);
+    }
   };
   auto worker = [&] {
     std::exception_ptr failure;
