@@ -228,6 +228,11 @@ struct CloudIndex::Impl {
   /// The k nearest over every chunk into `found`: the chunks nearest to q first, a chunk
   /// whose box is farther than the k-th point found so far skipped.
   void knn(const Vec3& q, nanoflann::KNNResultSet<double, std::uint32_t>& found) const {
+    if (chunks.size() == 1) {  // a surface's sample tree, a patch's subcloud: nothing to order
+      ForestKnn shared{found, chunks[0]->first_slot};
+      chunks[0]->tree->findNeighbors(shared, q.data(), exact_search(true));
+      return;
+    }
     thread_local std::vector<std::pair<double, std::size_t>> order;
     order.clear();
     for (std::size_t c = 0; c < chunks.size(); ++c) order.emplace_back(box_distance2(q, chunks[c]->lo, chunks[c]->hi), c);
