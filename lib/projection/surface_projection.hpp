@@ -59,6 +59,12 @@ class SurfaceProjector {
     double distance;
   };
   Sample nearest_sample(const Vec3& q) const;
+  /// A sample near q without a k-d query: from the sample nearest the parameters `guess`
+  /// (clamped to [0,1]^2), a walk to the nearest of the 8 neighbouring samples while that is
+  /// nearer q (at most `max_steps` moves). Its distance bounds the distance of q to the
+  /// surface from above, but the sample need not be the nearest one, so it gives no lower
+  /// bound (sample_cover() does not apply to it).
+  Sample sample_near(const Vec3& q, const Vec2& guess, int max_steps = 8) const;
   /// nearest_sample(q).distance.
   double sample_distance(const Vec3& q) const;
   /// How far a point of the surface may lie from its nearest sample, so that

@@ -3,11 +3,13 @@
 // trough whose arms face each other, (u,v) recovered on a curved surface, invariance to
 // scaling by 1000 plus a rigid motion, concurrent calls that agree bit for bit with
 // serial ones, and a sample cover that bounds every surface point's distance to its nearest
-// sample (so that a sample distance less the cover bounds a distance from below).
+// sample (so that a sample distance less the cover bounds a distance from below), and a
+// walk over the samples that finds a near one without a k-d query.
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <random>
 
@@ -284,6 +286,50 @@ void sample_cover_bounds_the_distance_from_below(void**) {
   assert_true(widest >= 0.5 * cover);  // not so loose that it prunes nothing
 }
 
+// sample_near, the split's look-up without a k-d query: from the sample at a point's own
+// parameters it stays at the nearest sample (or one as near, within rounding); from a far
+// guess it walks there within its step limit and stops at a local minimum otherwise; its
+// distance is always that of the sample it names, never below the nearest sample's; a
+// NaN guess starts at a corner.
+void sample_near_walks_to_a_near_sample(void**) {
+  const BaseSurface surface = curved_surface();
+  const SurfaceProjector projector(surface, dbs::FootPrecision::Distance);
+  // The sample grid's points, to check the distance returned against the index.
+  const std::vector<Vec3> samples = surface.sample(64, 64).points;
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), lift(-0.02, 0.02);
+  int nearest_from_own = 0, nearest_from_far = 0;
+  const int count = 2000;
+  for (int k = 0; k < count; ++k) {
+    const double u = unit(rng), v = unit(rng);
+    const Vec3 q = surface.eval(u, v) + lift(rng) * surface.normal(u, v);
+    const SurfaceProjector::Sample nearest = projector.nearest_sample(q);
+    const SurfaceProjector::Sample own = projector.sample_near(q, Vec2(u, v));
+    const SurfaceProjector::Sample far = projector.sample_near(q, Vec2(u < 0.5 ? u + 0.1 : u - 0.1, v), 64);
+    const SurfaceProjector::Sample stuck = projector.sample_near(q, Vec2(0.0, 0.0), 0);
+    for (const auto& s : {own, far, stuck}) {
+      assert_true(s.index < samples.size());
+      assert_true(s.distance == (samples[s.index] - q).norm());
+      assert_true(s.distance >= nearest.distance);
+    }
+    assert_true(stuck.index == 0);  // no step allowed: the sample at the guess
+    nearest_from_own += own.distance <= nearest.distance * (1.0 + 1e-12);
+    nearest_from_far += far.distance <= nearest.distance * (1.0 + 1e-12);
+  }
+  std::printf("nearest sample reached: %d / %d from the own parameters, %d / %d from 0.1 away\n", nearest_from_own, count, nearest_from_far, count);
+  assert_true(nearest_from_own >= count * 99 / 100);
+  assert_true(nearest_from_far >= count * 99 / 100);
+  const SurfaceProjector::Sample from_nan = projector.sample_near(Vec3(0.1, 0.1, 0.0), Vec2(NAN, NAN), 0);
+  assert_true(from_nan.index == 0);
+  bool thrown = false;
+  try {
+    projector.sample_near(Vec3(0, INFINITY, 0), Vec2(0.5, 0.5));
+  } catch (const Error& e) {
+    thrown = e.code() == ErrorCode::NonFinite;
+  }
+  assert_true(thrown);
+}
+
 void bad_input_is_rejected(void**) {
   const BaseSurface surface = Rectangle().surface();
   bool thrown = false;
@@ -315,6 +361,7 @@ int main() {
       cmocka_unit_test(projection_is_invariant_to_scale_and_rigid_motion),
       cmocka_unit_test(concurrent_calls_match_serial_ones),
       cmocka_unit_test(sample_cover_bounds_the_distance_from_below),
+      cmocka_unit_test(sample_near_walks_to_a_near_sample),
       cmocka_unit_test(bad_input_is_rejected),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
