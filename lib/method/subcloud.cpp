@@ -153,8 +153,9 @@ std::uint8_t membership(const Vec3& p, const std::array<ChildTest, 4>& children)
   const int first = order[0];
   if (d.lower(first) <= children[first].own_limit) {
     // The same test first with a sample found without a k-d query: any sample's distance
-    // bounds the distance from above, which is all the test needs. It decides 85-95% of the
-    // points of a height field; the rest take the nearest sample.
+    // bounds the distance from above, which is all the test needs. It decides 89% of the
+    // points the rippled bench field splits and about half on the hard shapes of
+    // dbs-bench-folds; the rest take the nearest sample.
     const double guessed = children[first].guessed_upper(p);
     bool alone = guessed <= children[first].own_limit;
     for (int k = 1; k < 4 && alone; ++k) alone = d.lower(order[k]) > guessed;
