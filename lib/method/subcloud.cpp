@@ -60,7 +60,7 @@ struct ChildTest {
     box.max.array() += padding;
 
     const Boundary& b = surface.boundary();
-    const Vec3 c00 = b.bottom().points().front(), c10 = b.bottom().points().back(), c01 = b.top().points().front(), c11 = b.top().points().back();
+    const Vec3 c00 = b.corner(0, 0), c10 = b.corner(1, 0), c01 = b.corner(0, 1), c11 = b.corner(1, 1);
     centre = 0.25 * (c00 + c10 + c01 + c11);
     across_u = 0.5 * ((c10 + c11) - (c00 + c01));
     across_v = 0.5 * ((c01 + c11) - (c00 + c10));
