@@ -71,7 +71,7 @@ struct ChildTest {
   }
 
   /// The distance of p to a sample near its guessed parameters: an upper bound of its
-  /// distance to the surface, without a k-d query (SurfaceProjector::sample_near).
+  /// distance to the surface, without a tree query (SurfaceProjector::sample_near).
   double guessed_upper(const Vec3& p) const {
     const Vec3 d = p - centre;
     const Vec2 st = Vec2(0.5, 0.5) + inverse * Vec2(across_u.dot(d), across_v.dot(d));
@@ -152,7 +152,7 @@ std::uint8_t membership(const Vec3& p, const std::array<ChildTest, 4>& children)
   // nearer, and the loop below would give the point to that child alone.
   const int first = order[0];
   if (d.lower(first) <= children[first].own_limit) {
-    // The same test first with a sample found without a k-d query: any sample's distance
+    // The same test first with a sample found without a tree query: any sample's distance
     // bounds the distance from above, which is all the test needs. It decides 89% of the
     // points the rippled bench field splits and about half on the hard shapes of
     // dbs-bench-folds; the rest take the nearest sample.

@@ -7,8 +7,8 @@
 #include <mutex>
 #include <string>
 
-#include "cloud_index.hpp"
 #include "error.hpp"
+#include "grid_nearest.hpp"
 
 namespace dbs {
 
@@ -79,17 +79,17 @@ struct SurfaceProjector::Impl {
     for (int side = 0; side < 4; ++side) side_step[side] = surface.boundary().side(static_cast<Side>(side)).length() / (samples - 1);
   }
 
-  /// The samples x samples surface samples (u fastest) and their k-d tree, made on first
+  /// The samples x samples surface samples (u fastest) and their search tree, made on first
   /// use: a descent from a start given (project_from) that stays inside needs neither, and
   /// a growing grid's error sample mostly starts from its feet on the previous surface.
   const std::vector<Vec3>& grid() const {
     std::call_once(built, [&] {
       grid_ = surface.sample(samples, samples).points;
-      index_ = std::make_unique<CloudIndex>(grid_);
+      index_ = std::make_unique<GridNearest>(grid_, samples, samples);
     });
     return grid_;
   }
-  const CloudIndex& index() const {
+  const GridNearest& index() const {
     grid();
     return *index_;
   }
@@ -177,7 +177,7 @@ struct SurfaceProjector::Impl {
  private:
   mutable std::once_flag built;
   mutable std::vector<Vec3> grid_;
-  mutable std::unique_ptr<CloudIndex> index_;
+  mutable std::unique_ptr<GridNearest> index_;
   mutable std::once_flag sided;
   mutable std::array<std::vector<Vec3>, 4> sides_;
   mutable std::once_flag covered;

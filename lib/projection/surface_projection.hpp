@@ -1,5 +1,6 @@
 // Orthogonal projection of points onto a base surface: the nearest foot, not a local
-// minimum. Start from the nearest of a dense set of surface samples (k-d tree over them),
+// minimum. Start from the nearest of a dense set of surface samples (GridNearest over them;
+// the lowest sample index among equally near ones),
 // refine with a Gauss-Newton iteration in (u,v) (step halving, clamped to [0,1]^2, a
 // coordinate on the border held there while the descent points outwards); a foot pushed
 // against the border becomes the nearest boundary point: each side is searched from its
@@ -51,7 +52,7 @@ class SurfaceProjector {
   /// derivatives at every sample, so that a descent from the nearest sample starts without
   /// evaluating the surface there. The same feet, bit for bit, one evaluation fewer each.
   void prepare(std::size_t projections);
-  /// The surface sample nearest q (one k-d tree query): its index, and its distance to q,
+  /// The surface sample nearest q (one tree query): its index, and its distance to q,
   /// an upper bound of the distance to the surface (and of project(q).distance, the
   /// descent starting there).
   struct Sample {
@@ -59,7 +60,7 @@ class SurfaceProjector {
     double distance;
   };
   Sample nearest_sample(const Vec3& q) const;
-  /// A sample near q without a k-d query: from the sample nearest the parameters `guess`
+  /// A sample near q without a tree query: from the sample nearest the parameters `guess`
   /// (clamped to [0,1]^2), a walk to the nearest of the 8 neighbouring samples while that is
   /// nearer q (at most `max_steps` moves). Its distance bounds the distance of q to the
   /// surface from above, but the sample need not be the nearest one, so it gives no lower
@@ -79,7 +80,7 @@ class SurfaceProjector {
   /// project(q) from nearest_sample(q) found before: the same foot, without its query.
   Foot project(const Vec3& q, const Sample& nearest) const;
   /// The descent from `start` in [0,1]^2 (a foot of q found before on a nearby surface)
-  /// instead of from the nearest sample: one k-d query fewer and fewer steps, but the
+  /// instead of from the nearest sample: one tree query fewer and fewer steps, but the
   /// local foot nearest the start, which is the nearest foot only while the start is near it.
   Foot project_from(const Vec3& q, const Vec2& start) const;
 
