@@ -23,6 +23,9 @@ constexpr double kConvergedDistance = 1e-7;
 /// FootPrecision::Distance and Measure: a step turning back on a halved one is at most this fraction of
 /// it (see settle_on_crease).
 constexpr double kCreaseShrink = 0.25;
+/// FootPrecision::Measure: Gauss-Newton steps shrinking slower than this give way to
+/// Newton's (see descend).
+constexpr double kSlowRate = 0.25;
 /// Steps in (u,v) shorter than this are taken without a line search (see take_step).
 constexpr double kNearFoot = 1e-6;
 /// Growth of |S - q|^2 that counts as rounding for a step near the foot, in units of
@@ -59,6 +62,11 @@ bool pushes_out(double x, double g, double tangent_norm, double residual_norm) {
   return (x <= 0.0 && g > scale) || (x >= 1.0 && g < -scale);
 }
 
+/// A 2 x 2 symmetric matrix: the model's Hessian in (u,v).
+struct Hessian {
+  double uu, uv, vv;
+};
+
 struct Iterate {
   Vec2 x;
   SurfacePoint s;
@@ -71,11 +79,12 @@ struct SurfaceProjector::Impl {
   const BaseSurface& surface;
   double tolerance;
   bool settle_creases;  // FootPrecision::Distance and Measure
+  bool newton_when_slow;  // FootPrecision::Measure
   int samples;
   /// Arc length of a side between two consecutive samples on it.
   std::array<double, 4> side_step;
 
-  Impl(const BaseSurface& s, double t, bool settle, int n) : surface(s), tolerance(t), settle_creases(settle), samples(n) {
+  Impl(const BaseSurface& s, double t, bool settle, bool newton, int n) : surface(s), tolerance(t), settle_creases(settle), newton_when_slow(newton), samples(n) {
     for (int side = 0; side < 4; ++side) side_step[side] = surface.boundary().side(static_cast<Side>(side)).length() / (samples - 1);
   }
 
@@ -240,17 +249,49 @@ struct SurfaceProjector::Impl {
     if (length > cap) step *= cap / length;
   }
 
+  /// Newton's Hessian of |S - q|^2 / 2: Gauss-Newton's J^T J plus r . S'' (r = S - q) where
+  /// the sum stays positive definite, so that the step still descends; else Gauss-Newton's.
+  /// One evaluation of the second derivatives at the iterate.
+  Hessian newton_hessian(const Vec3& q, const Iterate& it) const {
+    const Hessian gauss_newton{it.s.du.squaredNorm(), it.s.du.dot(it.s.dv), it.s.dv.squaredNorm()};
+    const SecondDerivatives s = surface.second_derivatives(it.x.x(), it.x.y());
+    const Vec3 r = it.s.p - q;
+    const Hessian h{gauss_newton.uu + r.dot(s.uu), gauss_newton.uv + r.dot(s.uv), gauss_newton.vv + r.dot(s.vv)};
+    return h.uu > 0.0 && h.vv > 0.0 && h.uu * h.vv - h.uv * h.uv > 1e-14 * h.uu * h.vv ? h : gauss_newton;
+  }
+
+  /// Where a descent is: the iterations made, the last step's progress and the last step
+  /// taken (before clamping), and whether it was halved.
+  struct Descent {
+    int iteration = 0;
+    double previous = std::numeric_limits<double>::infinity();
+    Vec2 last = Vec2::Zero();
+    bool halved = false;
+  };
+
   /// Gauss-Newton on |S(u,v) - q|^2 over [0,1]^2 with an active set: a coordinate on a bound
   /// whose gradient points outward is held there and the other one moves alone. Each step
-  /// is clamped to the domain and halved until the distance decreases.
+  /// is clamped to the domain and halved until the distance decreases. With
+  /// newton_when_slow, Gauss-Newton's rate (about the distance times the curvature) is
+  /// watched: for a point as far off as the surface's radius of curvature (another sheet of
+  /// a folded cloud) it nears 1, and such a foot ran into the iteration limit with its
+  /// distance still falling; it goes on with Newton's steps, which converge in a few.
   Iterate descend(const Vec3& q, Iterate it, std::array<bool, 2>& held) const {
-    double previous = std::numeric_limits<double>::infinity();
-    Vec2 last = Vec2::Zero();  // the last step taken (before clamping) ...
-    bool halved = false;       // ... and whether it was halved
-    for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
+    Descent d;
+    if (!iterate<false>(q, it, held, d)) iterate<true>(q, it, held, d);
+    held = held_coordinates(it, gradient(q, it));
+    return it;
+  }
+
+  /// descend()'s steps, Newton's or Gauss-Newton's (a loop of each: the Gauss-Newton loop of
+  /// every foot carries nothing of Newton's). False when Gauss-Newton's turned slow.
+  template <bool kNewton>
+  bool iterate(const Vec3& q, Iterate& it, std::array<bool, 2>& held, Descent& d) const {
+    for (; d.iteration < kMaxIterations; ++d.iteration) {
       const Vec2 g = gradient(q, it);
       held = held_coordinates(it, g);
-      const double huu = it.s.du.squaredNorm(), hvv = it.s.dv.squaredNorm(), huv = it.s.du.dot(it.s.dv);
+      const Hessian h = kNewton ? newton_hessian(q, it) : Hessian{it.s.du.squaredNorm(), it.s.du.dot(it.s.dv), it.s.dv.squaredNorm()};
+      const double huu = h.uu, hvv = h.vv, huv = h.uv;
       Vec2 step = Vec2::Zero();
       if (!held[0] && !held[1]) {
         const double det = huu * hvv - huv * huv;
@@ -264,19 +305,23 @@ struct SurfaceProjector::Impl {
       } else if (!held[1] && hvv > 0.0) {
         step.y() = -g.y() / hvv;
       }
-      if (settle_creases) settle_on_crease(step, last, halved);
+      if (settle_creases) settle_on_crease(step, d.last, d.halved);
       const double length = step.norm();
       const double taken = length > 0.0 ? take_step(q, it, step, length <= kNearFoot) : 0.0;
-      if (!(taken > 0.0)) break;
+      if (!(taken > 0.0)) return true;
       // With settle_creases converged by the step taken (a halved step is the progress made).
       const double progress = settle_creases ? taken : length;
-      if (converged(progress, previous, tolerance)) break;
-      previous = progress;
-      halved = taken < length;
-      last = step * (taken / length);
+      if (converged(progress, d.previous, tolerance)) return true;
+      const bool slow = !kNewton && newton_when_slow && progress >= kSlowRate * d.previous;
+      d.previous = progress;
+      d.halved = taken < length;
+      d.last = step * (taken / length);
+      if (slow) {
+        ++d.iteration;
+        return false;
+      }
     }
-    held = held_coordinates(it, gradient(q, it));
-    return it;
+    return true;
   }
 
   /// Local minimum of |S - q| along one side, from that side's nearest sample.
@@ -348,7 +393,8 @@ struct SurfaceProjector::Impl {
 
 SurfaceProjector::SurfaceProjector(const BaseSurface& surface, FootPrecision precision, int samples) {
   if (samples < 2) fail(ErrorCode::InvalidArgument, "SurfaceProjector: samples = " + std::to_string(samples) + ", at least 2 needed");
-  impl_ = std::make_unique<Impl>(surface, precision == FootPrecision::Parameters ? kConvergedParameters : kConvergedDistance, precision != FootPrecision::Parameters, samples);
+  impl_ = std::make_unique<Impl>(surface, precision == FootPrecision::Parameters ? kConvergedParameters : kConvergedDistance, precision != FootPrecision::Parameters,
+                                 precision == FootPrecision::Measure, samples);
 }
 
 SurfaceProjector::~SurfaceProjector() = default;

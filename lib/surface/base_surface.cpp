@@ -69,6 +69,20 @@ SurfacePoint BaseSurface::eval_derivs(double u, double v) const {
   return sp;
 }
 
+SecondDerivatives BaseSurface::second_derivatives(double u, double v) const {
+  check_parameters(u, v);
+  u = clamp_unit(u);
+  v = clamp_unit(v);
+  SecondDerivatives s = coons_.second_derivatives(u, v);
+  if (displacement_.is_zero()) return s;
+  Vec3 duu, duv, dvv;
+  displacement_.second_derivatives(u, v, duu, duv, dvv);
+  s.uu += duu;
+  s.uv += duv;
+  s.vv += dvv;
+  return s;
+}
+
 Vec3 BaseSurface::normal(double u, double v) const {
   check_parameters(u, v);
   u = clamp_unit(u);

@@ -23,6 +23,9 @@ class BaseSurface {
   /// S(u,v), (u,v) clamped to [0,1]^2; exactly the boundary polylines on the sides.
   Vec3 eval(double u, double v) const;
   SurfacePoint eval_derivs(double u, double v) const;
+  /// The second partial derivatives, (u,v) clamped (one-sided across the creases the
+  /// boundary's vertices draw through the Coons patch).
+  SecondDerivatives second_derivatives(double u, double v) const;
   /// Unit normal Su x Sv (falls back to a neighbouring sample where it vanishes).
   Vec3 normal(double u, double v) const;
   /// The most data sites of the displacement along either direction (0 for the plain Coons

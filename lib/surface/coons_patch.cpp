@@ -48,6 +48,15 @@ Grid CoonsPatch::sample(int nu, int nv) const {
   return g;
 }
 
+SecondDerivatives CoonsPatch::second_derivatives(double u, double v) const {
+  Vec3 d_bottom, d_top, d_left, d_right;
+  boundary_.bottom().at(u, d_bottom);
+  boundary_.top().at(u, d_top);
+  boundary_.left().at(v, d_left);
+  boundary_.right().at(v, d_right);
+  return {Vec3::Zero(), (d_top - d_bottom) + (d_right - d_left) - ((c11_ - c01_) - (c10_ - c00_)), Vec3::Zero()};
+}
+
 SurfacePoint CoonsPatch::eval_derivs(double u, double v) const {
   Vec3 d_bottom, d_top, d_left, d_right;
   const Vec3 bottom = boundary_.bottom().at(u, d_bottom), top = boundary_.top().at(u, d_top);

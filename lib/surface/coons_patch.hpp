@@ -12,6 +12,13 @@ struct SurfacePoint {
   Vec3 dv;
 };
 
+/// The second partial derivatives of a surface at a point (Newton's steps for a foot).
+struct SecondDerivatives {
+  Vec3 uu;
+  Vec3 uv;
+  Vec3 vv;
+};
+
 class CoonsPatch {
  public:
   explicit CoonsPatch(Boundary boundary);
@@ -20,6 +27,9 @@ class CoonsPatch {
   Vec3 eval(double u, double v) const;
   /// C and its partial derivatives (one-sided at polyline vertices).
   SurfacePoint eval_derivs(double u, double v) const;
+  /// The second derivatives (one-sided as eval_derivs' first ones): inside the sides'
+  /// segments C is bilinear in the sides' points, so Cuu = Cvv = 0 and Cuv is constant per cell.
+  SecondDerivatives second_derivatives(double u, double v) const;
   /// eval() on a uniform nu x nv grid (the Grid's parameters), bit for bit, each side
   /// evaluated once per row or column instead of once per point.
   Grid sample(int nu, int nv) const;

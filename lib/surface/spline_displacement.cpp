@@ -98,6 +98,13 @@ Vec3 blend_derivative(const SpanBasis& b, const Vec3& c0, const Vec3& c1, const 
   return b.dw[0] * c0 + b.dw[1] * c1 + b.dw[2] * c2 + b.dw[3] * c3;
 }
 
+/// The second derivative in x of the spline along one direction (b from span_basis for n
+/// sites): the weights' second derivatives are linear in t.
+Vec3 blend_second(const SpanBasis& b, int n, const Vec3& c0, const Vec3& c1, const Vec3& c2, const Vec3& c3) {
+  const double spans2 = static_cast<double>(n - 1) * (n - 1), t = b.t;
+  return spans2 * ((1.0 - t) * c0 + (3.0 * t - 2.0) * c1 + (1.0 - 3.0 * t) * c2 + t * c3);
+}
+
 }  // namespace
 
 SplineDisplacement::SplineDisplacement(const Grid& values) : nu_(values.nu), nv_(values.nv) {
@@ -180,6 +187,24 @@ void SplineDisplacement::eval_derivs(double u, double v, Vec3& d, Vec3& du, Vec3
   d = blend(bv, along_u[0], along_u[1], along_u[2], along_u[3]);
   du = blend(bv, along_u_du[0], along_u_du[1], along_u_du[2], along_u_du[3]);
   dv = blend_derivative(bv, along_u[0], along_u[1], along_u[2], along_u[3]);
+}
+
+void SplineDisplacement::second_derivatives(double u, double v, Vec3& duu, Vec3& duv, Vec3& dvv) const {
+  if (is_zero()) {
+    duu = duv = dvv = Vec3::Zero();
+    return;
+  }
+  const SpanBasis bu = span_basis(u, nu_, true), bv = span_basis(v, nv_, true);
+  Vec3 along_u[4], along_u_du[4], along_u_duu[4];
+  for (int b = 0; b < 4; ++b) {
+    const Vec3* row = &coeffs_[static_cast<std::size_t>(bv.first + b) * (nu_ + 2) + bu.first];
+    along_u[b] = blend(bu, row[0], row[1], row[2], row[3]);
+    along_u_du[b] = blend_derivative(bu, row[0], row[1], row[2], row[3]);
+    along_u_duu[b] = blend_second(bu, nu_, row[0], row[1], row[2], row[3]);
+  }
+  duu = blend(bv, along_u_duu[0], along_u_duu[1], along_u_duu[2], along_u_duu[3]);
+  duv = blend_derivative(bv, along_u_du[0], along_u_du[1], along_u_du[2], along_u_du[3]);
+  dvv = blend_second(bv, nv_, along_u[0], along_u[1], along_u[2], along_u[3]);
 }
 
 }  // namespace dbs

@@ -23,6 +23,8 @@ class SplineDisplacement {
   void add_to_interior(Grid& grid) const;
   /// Value and first partial derivatives.
   void eval_derivs(double u, double v, Vec3& d, Vec3& du, Vec3& dv) const;
+  /// Second partial derivatives.
+  void second_derivatives(double u, double v, Vec3& duu, Vec3& duv, Vec3& dvv) const;
 
  private:
   int nu_ = 0, nv_ = 0;              // data sites per direction

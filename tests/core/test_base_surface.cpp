@@ -240,6 +240,28 @@ void test_derivatives_on_polyline_sides(void**) {
   assert_true(worst < 1e-5);
 }
 
+// second_derivatives: central differences of the first derivatives (a displacement over
+// polyline sides, at parameters away from the sides' vertices, where the Coons patch is
+// bilinear in its sides' points).
+void test_second_derivatives_match_finite_differences(void**) {
+  const BaseSurface surface(wavy_boundary(1), wavy_grid(9, 7, 1));
+  const double h = 1e-6;
+  double worst = 0, scale = 0;
+  for (double u : {0.13, 0.41, 0.77}) {
+    for (double v : {0.21, 0.52, 0.93}) {
+      const dbs::SecondDerivatives s = surface.second_derivatives(u, v);
+      const SurfacePoint up = surface.eval_derivs(u + h, v), um = surface.eval_derivs(u - h, v);
+      const SurfacePoint vp = surface.eval_derivs(u, v + h), vm = surface.eval_derivs(u, v - h);
+      const Vec3 fd_uu = (up.du - um.du) / (2 * h), fd_vv = (vp.dv - vm.dv) / (2 * h);
+      const Vec3 fd_uv = (vp.du - vm.du) / (2 * h), fd_vu = (up.dv - um.dv) / (2 * h);
+      worst = std::max({worst, (s.uu - fd_uu).norm(), (s.vv - fd_vv).norm(), (s.uv - fd_uv).norm(), (s.uv - fd_vu).norm()});
+      scale = std::max({scale, s.uu.norm(), s.vv.norm(), s.uv.norm()});
+    }
+  }
+  assert_true(scale > 0.1);
+  assert_true(worst < 1e-6 * scale);
+}
+
 void test_approximates_height_field(void**) {
   auto f = [](double x, double y) { return 0.2 * std::sin(kPi * x) * std::sin(kPi * y); };
   const Boundary square({Vec3(0, 0, 0), Vec3(1, 0, 0)}, {Vec3(1, 0, 0), Vec3(1, 1, 0)}, {Vec3(0, 1, 0), Vec3(1, 1, 0)},
@@ -372,6 +394,7 @@ int main() {
       cmocka_unit_test(test_base_surface_interpolates_grid),
       cmocka_unit_test(test_derivatives_match_finite_differences),
       cmocka_unit_test(test_derivatives_on_polyline_sides),
+      cmocka_unit_test(test_second_derivatives_match_finite_differences),
       cmocka_unit_test(test_approximates_height_field),
       cmocka_unit_test(test_scaling_scales_surface),
       cmocka_unit_test(test_eval_clamps_and_rejects_nan),
