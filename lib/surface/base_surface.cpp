@@ -12,9 +12,12 @@ namespace {
 
 double clamp_unit(double x) { return x > 0.0 ? (x < 1.0 ? x : 1.0) : 0.0; }
 
-void check_parameters(double u, double v) {
+/// Refuses non-finite parameters and clamps finite ones to [0,1].
+void check_and_clamp(double& u, double& v) {
   if (!std::isfinite(u) || !std::isfinite(v))
     fail(ErrorCode::NonFinite, "surface evaluated at a non-finite parameter (u=" + std::to_string(u) + ", v=" + std::to_string(v) + ")");
+  u = clamp_unit(u);
+  v = clamp_unit(v);
 }
 
 bool on_border(double u, double v) { return u == 0.0 || u == 1.0 || v == 0.0 || v == 1.0; }
@@ -47,18 +50,14 @@ BaseSurface::BaseSurface(Boundary boundary, const Grid& grid) : coons_(std::move
 }
 
 Vec3 BaseSurface::eval(double u, double v) const {
-  check_parameters(u, v);
-  u = clamp_unit(u);
-  v = clamp_unit(v);
+  check_and_clamp(u, v);
   // On the border the displacement vanishes: the point is the boundary polyline's, as is.
   if (on_border(u, v) || displacement_.is_zero()) return coons_.eval(u, v);
   return coons_.eval(u, v) + displacement_.eval(u, v);
 }
 
 SurfacePoint BaseSurface::eval_derivs(double u, double v) const {
-  check_parameters(u, v);
-  u = clamp_unit(u);
-  v = clamp_unit(v);
+  check_and_clamp(u, v);
   SurfacePoint sp = coons_.eval_derivs(u, v);
   if (displacement_.is_zero()) return sp;
   Vec3 d, du, dv;
@@ -70,23 +69,15 @@ SurfacePoint BaseSurface::eval_derivs(double u, double v) const {
 }
 
 SecondDerivatives BaseSurface::second_derivatives(double u, double v) const {
-  check_parameters(u, v);
-  u = clamp_unit(u);
-  v = clamp_unit(v);
-  SecondDerivatives s = coons_.second_derivatives(u, v);
-  if (displacement_.is_zero()) return s;
-  Vec3 duu, duv, dvv;
-  displacement_.second_derivatives(u, v, duu, duv, dvv);
-  s.uu += duu;
-  s.uv += duv;
-  s.vv += dvv;
-  return s;
+  check_and_clamp(u, v);
+  const SecondDerivatives c = coons_.second_derivatives(u, v);
+  if (displacement_.is_zero()) return c;
+  const SecondDerivatives d = displacement_.second_derivatives(u, v);
+  return {c.uu + d.uu, c.uv + d.uv, c.vv + d.vv};
 }
 
 Vec3 BaseSurface::normal(double u, double v) const {
-  check_parameters(u, v);
-  u = clamp_unit(u);
-  v = clamp_unit(v);
+  check_and_clamp(u, v);
   // Where Su x Sv vanishes (a collapsed corner, tangent sides) the normal is the limit
   // from inside the patch: sample ever further towards the centre until it is defined.
   const double du_sign = u < 0.5 ? 1.0 : -1.0, dv_sign = v < 0.5 ? 1.0 : -1.0;

@@ -2,22 +2,9 @@
 #pragma once
 #include "boundary.hpp"
 #include "grid.hpp"
+#include "surface_point.hpp"
 
 namespace dbs {
-
-/// Value and first partial derivatives of a surface at one (u,v).
-struct SurfacePoint {
-  Vec3 p;
-  Vec3 du;
-  Vec3 dv;
-};
-
-/// The second partial derivatives of a surface at a point (Newton's steps for a foot).
-struct SecondDerivatives {
-  Vec3 uu;
-  Vec3 uv;
-  Vec3 vv;
-};
 
 class CoonsPatch {
  public:

@@ -189,11 +189,8 @@ void SplineDisplacement::eval_derivs(double u, double v, Vec3& d, Vec3& du, Vec3
   dv = blend_derivative(bv, along_u[0], along_u[1], along_u[2], along_u[3]);
 }
 
-void SplineDisplacement::second_derivatives(double u, double v, Vec3& duu, Vec3& duv, Vec3& dvv) const {
-  if (is_zero()) {
-    duu = duv = dvv = Vec3::Zero();
-    return;
-  }
+SecondDerivatives SplineDisplacement::second_derivatives(double u, double v) const {
+  if (is_zero()) return {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
   const SpanBasis bu = span_basis(u, nu_, true), bv = span_basis(v, nv_, true);
   Vec3 along_u[4], along_u_du[4], along_u_duu[4];
   for (int b = 0; b < 4; ++b) {
@@ -202,9 +199,8 @@ void SplineDisplacement::second_derivatives(double u, double v, Vec3& duu, Vec3&
     along_u_du[b] = blend_derivative(bu, row[0], row[1], row[2], row[3]);
     along_u_duu[b] = blend_second(bu, nu_, row[0], row[1], row[2], row[3]);
   }
-  duu = blend(bv, along_u_duu[0], along_u_duu[1], along_u_duu[2], along_u_duu[3]);
-  duv = blend_derivative(bv, along_u_du[0], along_u_du[1], along_u_du[2], along_u_du[3]);
-  dvv = blend_second(bv, nv_, along_u[0], along_u[1], along_u[2], along_u[3]);
+  return {blend(bv, along_u_duu[0], along_u_duu[1], along_u_duu[2], along_u_duu[3]), blend_derivative(bv, along_u_du[0], along_u_du[1], along_u_du[2], along_u_du[3]),
+          blend_second(bv, nv_, along_u[0], along_u[1], along_u[2], along_u[3])};
 }
 
 }  // namespace dbs

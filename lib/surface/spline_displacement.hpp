@@ -3,6 +3,7 @@
 // Coons patch: the values on the grid's border are zero, so d vanishes on the boundary.
 #pragma once
 #include "grid.hpp"
+#include "surface_point.hpp"
 
 namespace dbs {
 
@@ -24,7 +25,7 @@ class SplineDisplacement {
   /// Value and first partial derivatives.
   void eval_derivs(double u, double v, Vec3& d, Vec3& du, Vec3& dv) const;
   /// Second partial derivatives.
-  void second_derivatives(double u, double v, Vec3& duu, Vec3& duv, Vec3& dvv) const;
+  SecondDerivatives second_derivatives(double u, double v) const;
 
  private:
   int nu_ = 0, nv_ = 0;              // data sites per direction
