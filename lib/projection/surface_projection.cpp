@@ -20,6 +20,9 @@ constexpr int kMaxHalvings = 40;
 /// (FootPrecision::Parameters, FootPrecision::Distance).
 constexpr double kConvergedParameters = 1e-12;
 constexpr double kConvergedDistance = 1e-7;
+/// FootPrecision::Measure: a mean distance to compare with an accuracy target. The distance
+/// is stationary at the foot, so parameters this close give it to about their square.
+constexpr double kConvergedMeasure = 1e-5;
 /// FootPrecision::Distance and Measure: a step turning back on a halved one is at most this fraction of
 /// it (see settle_on_crease).
 constexpr double kCreaseShrink = 0.25;
@@ -393,7 +396,7 @@ struct SurfaceProjector::Impl {
 
 SurfaceProjector::SurfaceProjector(const BaseSurface& surface, FootPrecision precision, int samples) {
   if (samples < 2) fail(ErrorCode::InvalidArgument, "SurfaceProjector: samples = " + std::to_string(samples) + ", at least 2 needed");
-  impl_ = std::make_unique<Impl>(surface, precision == FootPrecision::Parameters ? kConvergedParameters : kConvergedDistance, precision != FootPrecision::Parameters,
+  impl_ = std::make_unique<Impl>(surface, precision == FootPrecision::Parameters ? kConvergedParameters : precision == FootPrecision::Measure ? kConvergedMeasure : kConvergedDistance, precision != FootPrecision::Parameters,
                                  precision == FootPrecision::Measure, samples);
 }
 

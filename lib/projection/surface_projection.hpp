@@ -41,7 +41,10 @@ struct Foot {
 /// radius of curvature: on the 10,201-point mushroom 6,225 of the 158,442 feet of these two
 /// modes ran into the iteration limit), so those feet converge instead; Distance does not (a
 /// foot Newton's steps find there may be another local minimum, and a membership with it:
-/// the 10,201-point tall dome's mean distance rose from 0.000586 to 0.000755).
+/// the 10,201-point tall dome's mean distance rose from 0.000586 to 0.000755). Measure's
+/// feet stop at 1e-5 in the parameters (the distance within about 3e-7 of the patch size):
+/// Distance's 1e-7 took 4-5% more instructions on the mushroom and the rippled field and
+/// gave every one of 69 runs compared the same result.
 enum class FootPrecision { Parameters, Distance, Measure };
 
 class SurfaceProjector {
