@@ -20,8 +20,8 @@ constexpr int kMaxHalvings = 40;
 /// (FootPrecision::Parameters, FootPrecision::Distance).
 constexpr double kConvergedParameters = 1e-12;
 constexpr double kConvergedDistance = 1e-7;
-/// FootPrecision::Measure: a mean distance to compare with an accuracy target. The distance
-/// is stationary at the foot, so parameters this close give it to about their square.
+/// FootPrecision::Measure: a mean distance to compare with an accuracy target. Distances
+/// within 3e-7 of the exact ones on a surface 2.9 across (core_test_surface_projection).
 constexpr double kConvergedMeasure = 1e-5;
 /// FootPrecision::Distance and Measure: a step turning back on a halved one is at most this fraction of
 /// it (see settle_on_crease).
@@ -69,6 +69,9 @@ bool pushes_out(double x, double g, double tangent_norm, double residual_norm) {
 struct Hessian {
   double uu, uv, vv;
 };
+
+/// Gauss-Newton's Hessian J^T J of |S - q|^2 / 2 at s.
+Hessian gauss_newton_hessian(const SurfacePoint& s) { return {s.du.squaredNorm(), s.du.dot(s.dv), s.dv.squaredNorm()}; }
 
 struct Iterate {
   Vec2 x;
@@ -256,7 +259,7 @@ struct SurfaceProjector::Impl {
   /// the sum stays positive definite, so that the step still descends; else Gauss-Newton's.
   /// One evaluation of the second derivatives at the iterate.
   Hessian newton_hessian(const Vec3& q, const Iterate& it) const {
-    const Hessian gauss_newton{it.s.du.squaredNorm(), it.s.du.dot(it.s.dv), it.s.dv.squaredNorm()};
+    const Hessian gauss_newton = gauss_newton_hessian(it.s);
     const SecondDerivatives s = surface.second_derivatives(it.x.x(), it.x.y());
     const Vec3 r = it.s.p - q;
     const Hessian h{gauss_newton.uu + r.dot(s.uu), gauss_newton.uv + r.dot(s.uv), gauss_newton.vv + r.dot(s.vv)};
@@ -293,7 +296,7 @@ struct SurfaceProjector::Impl {
     for (; d.iteration < kMaxIterations; ++d.iteration) {
       const Vec2 g = gradient(q, it);
       held = held_coordinates(it, g);
-      const Hessian h = kNewton ? newton_hessian(q, it) : Hessian{it.s.du.squaredNorm(), it.s.du.dot(it.s.dv), it.s.dv.squaredNorm()};
+      const Hessian h = kNewton ? newton_hessian(q, it) : gauss_newton_hessian(it.s);
       const double huu = h.uu, hvv = h.vv, huv = h.uv;
       Vec2 step = Vec2::Zero();
       if (!held[0] && !held[1]) {
