@@ -259,8 +259,8 @@ struct SurfaceProjector::Impl {
     if (length > cap) step *= cap / length;
   }
 
-  /// Where a descent is: the iterations made, the last step's progress and the last step
-  /// taken (before clamping), and whether it was halved.
+  /// Where a descent is: the iterations made, the length of the last step taken and the
+  /// step itself (before clamping), whether it was halved, and the crease coordinates.
   struct Descent {
     int iteration = 0;
     double previous = std::numeric_limits<double>::infinity();
@@ -270,13 +270,18 @@ struct SurfaceProjector::Impl {
     std::array<bool, 2> crease{{false, false}};
   };
 
-  /// settle_on_crease for the exact feet (FootPrecision::Parameters), late and one coordinate
-  /// at a time. A crease of the Coons patch of polylines runs along a u or a v line (a vertex
-  /// of a side's polyline), so only the coordinate whose step turns back on a halved one is
-  /// capped, and the foot still slides along the crease in the other to the least distance
-  /// there. Early steps are left alone: a descent that crosses a crease once on its way is
-  /// not on it. Feet swinging across a crease ran into the iteration limit (1,610 of the
-  /// 15,413 leaf feet of a 10,201-point overhanging cap, 1.9 million halved trials).
+  /// settle_on_crease for the exact feet (FootPrecision::Parameters), one coordinate at a
+  /// time. A crease of the Coons patch of polylines runs along a u or a v line (a vertex of
+  /// a side's polyline). A coordinate whose step turns back on a halved one is marked as a
+  /// crease coordinate; from the kLateSettling-th step on, after any halved step, its step
+  /// is capped at kCreaseShrink of its last one, whichever way it points. The foot then
+  /// closes in on the crease whether it swings across it or approaches it from one side
+  /// (where each full step crosses it and is halved, and the other coordinate moved only by
+  /// the same halved fraction), and slides along the crease in the other coordinate to the
+  /// least distance there. Early steps are left alone: a descent that crosses a crease once
+  /// on its way is not on it. Feet swinging across a crease ran into the iteration limit
+  /// (1,610 of the 15,413 leaf feet of a 10,201-point overhanging cap, 1.9 million halved
+  /// trials). Returns whether a step was capped.
   static bool settle_coordinate_on_crease(Vec2& step, Descent& d) {
     bool capped = false;
     if (!d.halved) return capped;
