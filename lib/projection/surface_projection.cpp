@@ -23,8 +23,9 @@ constexpr double kConvergedDistance = 1e-7;
 /// FootPrecision::Measure: a mean distance to compare with an accuracy target. Distances
 /// within 3e-7 of the exact ones on a surface 2.9 across (core_test_surface_projection).
 constexpr double kConvergedMeasure = 1e-5;
-/// A step turning back on a halved one is at most this fraction of it (see
-/// settle_on_crease; FootPrecision::Parameters late and per coordinate).
+/// A step turning back on a halved one is at most this fraction of it (settle_on_crease);
+/// for the exact feet, a crease coordinate's step after a halved one, either way
+/// (settle_coordinate_on_crease).
 constexpr double kCreaseShrink = 0.25;
 /// FootPrecision::Parameters: after this many steps a coordinate turning back on a halved
 /// step is settled on its crease (see settle_coordinate_on_crease).
