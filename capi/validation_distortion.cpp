@@ -54,7 +54,7 @@ int dbs_mesh_distortion(const dbs_mesh* mesh, int32_t scaling, dbs_distortion** 
     require_non_null(mesh, "mesh");
     require_non_null(out, "out");
     const dbs::DomainScaling s = scaling_of(scaling);
-    *out = new dbs_distortion{dbs::measure_distortion(mesh->cloud.points(), mesh->u, mesh->v, mesh->mesh.triangles, s, mesh->mesh.surface_normals)};
+    *out = new dbs_distortion{dbs::measure_distortion(mesh->cloud.points(), mesh->u, mesh->v, mesh->mesh.triangles, s, mesh->mesh.reference_normals)};
   });
 }
 

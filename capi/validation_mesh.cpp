@@ -109,7 +109,7 @@ int dbs_mesh_save(const dbs_mesh* mesh, const char* path) {
     const dbs::ValidationMesh& m = mesh->mesh;
     if (ext == ".obj") {
 #ifdef DBS_HAVE_REPORT
-      dbs::write_textured_obj(file, mesh->cloud.points(), mesh->u, mesh->v, m.triangles, m.surface_normals);
+      dbs::write_textured_obj(file, mesh->cloud.points(), mesh->u, mesh->v, m.triangles, m.reference_normals);
 #else
       fail_status(DBS_ERR_UNSUPPORTED, "cannot save the textured mesh '" + file + "': this libdbs was built without the report (DBS_WITH_REPORT=OFF); .ply works");
 #endif

@@ -760,8 +760,13 @@ typedef struct dbs_distortion dbs_distortion;
 #define DBS_DISTORTION_CROPPED 6         /* \since 0.4: triangles with a cropped vertex (DBS_OPT_CROP), left out of every other figure, a count */
 
 /** Distortion of the Delaunay mesh. A triangle is folded when the sign of det J times the
- *  sign of its 3D normal against the base surface's normal differs from the majority's, so
- *  a fold of the parameterization shows although every Delaunay triangle turns the same way in (u,v).
+ *  sign of its 3D normal against a reference normal differs from the majority's, so a fold
+ *  of the parameterization shows although every Delaunay triangle turns the same way in
+ *  (u,v). The reference (since 0.4) is the cloud's own normal at the triangle's vertices,
+ *  oriented by the fold measure (DBS_STAT_FOLDED_SHARE's; the measure of every point not left
+ *  out), or the base surface's normal at the triangle's (u,v) centre where the measure gives
+ *  none; before 0.4 it was always the surface's, which turns over with a pleated surface and
+ *  so marked the well-ordered triangles over a pleat as folded.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (scaling), DBS_ERR_NO_MEMORY. \since 0.1 */
 DBS_API int dbs_mesh_distortion(const dbs_mesh *mesh, int32_t scaling, dbs_distortion **out);
 /** Distortion of the caller's mesh over the parameterized cloud: `triangles` holds

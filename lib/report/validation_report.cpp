@@ -92,8 +92,8 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   Stopwatch clock;
   const ValidationMesh mesh = build_validation_mesh(result, cloud, options.threads);
   const double mesh_seconds = clock.lap();
-  const Distortion per_axis = measure_distortion(cloud.points(), result.u, result.v, mesh.triangles, DomainScaling::PerAxis, mesh.surface_normals);
-  const Distortion uniform = measure_distortion(cloud.points(), result.u, result.v, mesh.triangles, DomainScaling::Uniform, mesh.surface_normals);
+  const Distortion per_axis = measure_distortion(cloud.points(), result.u, result.v, mesh.triangles, DomainScaling::PerAxis, mesh.reference_normals);
+  const Distortion uniform = measure_distortion(cloud.points(), result.u, result.v, mesh.triangles, DomainScaling::Uniform, mesh.reference_normals);
   const double distortion_seconds = clock.lap();
   const DistanceReport distances = distance_statistics(result, result.accuracy);
   const double distance_seconds = clock.lap();

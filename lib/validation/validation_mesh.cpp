@@ -6,6 +6,7 @@
 #include "cloud_index.hpp"
 #include "delaunay_mesh.hpp"
 #include "error.hpp"
+#include "fold_measure.hpp"
 #include "parallel.hpp"
 #include "suspicious_triangles.hpp"
 
@@ -36,10 +37,31 @@ std::vector<Triangle> triangulate_kept(const Result& result) {
 
 }  // namespace
 
-std::vector<Vec3> surface_normals_at(const Result& result, const std::vector<Triangle>& triangles, int threads) {
+std::vector<Vec3> oriented_cloud_normals(const Result& result, const PointCloud& cloud, int threads) {
+  require_matching(result, cloud);
+  std::vector<std::size_t> kept;
+  std::vector<Vec3> points;
+  std::vector<double> u, v;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (result.left_out(i)) continue;
+    kept.push_back(i);
+    points.push_back(cloud.points()[i]);
+    u.push_back(result.u[i]);
+    v.push_back(result.v[i]);
+  }
+  std::vector<Vec3> normals(cloud.size(), Vec3::Zero());
+  const FoldMeasure folds = measure_folds(points, u, v, result.noise, threads);
+  for (std::size_t k = 0; k < kept.size(); ++k) normals[kept[k]] = folds.right_normal[k];
+  return normals;
+}
+
+std::vector<Vec3> reference_normals_at(const Result& result, const std::vector<Vec3>& cloud_normals, const std::vector<Triangle>& triangles, int threads) {
+  if (cloud_normals.size() != result.u.size()) fail(ErrorCode::InvalidArgument, "reference_normals_at: " + std::to_string(cloud_normals.size()) + " cloud normals for " + std::to_string(result.u.size()) + " points");
   std::vector<Vec3> normals(triangles.size());
   parallel_for(triangles.size(), resolve_threads(threads), [&](std::size_t t) {
     const Triangle& tri = triangles[t];
+    normals[t] = cloud_normals[tri[0]] + cloud_normals[tri[1]] + cloud_normals[tri[2]];
+    if (normals[t] != Vec3::Zero()) return;
     double u = (result.u[tri[0]] + result.u[tri[1]] + result.u[tri[2]]) / 3.0;
     double v = (result.v[tri[0]] + result.v[tri[1]] + result.v[tri[2]]) / 3.0;
     result.evaluate(std::clamp(u, 0.0, 1.0), std::clamp(v, 0.0, 1.0), &normals[t]);
@@ -53,7 +75,7 @@ ValidationMesh build_validation_mesh(const Result& result, const PointCloud& clo
   mesh.triangles = triangulate_kept(result);
   const CloudIndex index(cloud.points());
   mesh.suspicious = find_suspicious_triangles(cloud.points(), mesh.triangles, local_spacing(index, threads));
-  mesh.surface_normals = surface_normals_at(result, mesh.triangles, threads);
+  mesh.reference_normals = reference_normals_at(result, oriented_cloud_normals(result, cloud, threads), mesh.triangles, threads);
   return mesh;
 }
 
@@ -64,7 +86,8 @@ Distortion measure_result_distortion(const Result& result, const PointCloud& clo
       if (vertex < 0 || static_cast<std::size_t>(vertex) >= cloud.size()) fail(ErrorCode::OutOfRange, "triangle " + std::to_string(t) + " has vertex index " + std::to_string(vertex) + " outside the " + std::to_string(cloud.size()) + " points");
     }
   }
-  if (result.cropped_points == 0) return measure_distortion(cloud.points(), result.u, result.v, triangles, scaling, surface_normals_at(result, triangles, threads));
+  const std::vector<Vec3> cloud_normals = oriented_cloud_normals(result, cloud, threads);
+  if (result.cropped_points == 0) return measure_distortion(cloud.points(), result.u, result.v, triangles, scaling, reference_normals_at(result, cloud_normals, triangles, threads));
   // Triangles with a cropped vertex have no (u,v) image: measured are the others, and the
   // result lists every triangle in the caller's order.
   std::vector<Triangle> measured;
@@ -75,7 +98,7 @@ Distortion measure_result_distortion(const Result& result, const PointCloud& clo
     measured.push_back(tri);
     position.push_back(t);
   }
-  Distortion part = measure_distortion(cloud.points(), result.u, result.v, measured, scaling, surface_normals_at(result, measured, threads));
+  Distortion part = measure_distortion(cloud.points(), result.u, result.v, measured, scaling, reference_normals_at(result, cloud_normals, measured, threads));
   Distortion whole;
   whole.summary = part.summary;
   whole.summary.cropped = triangles.size() - measured.size();

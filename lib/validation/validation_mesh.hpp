@@ -1,8 +1,11 @@
 // The validation mesh of a parameterization (method (a) of the paper's section 7): the 2D
 // Delaunay triangulation of the result's (u,v) over the cloud's points, its suspicious
-// (bridging) triangles, and per triangle the base surface's normal, which tells a triangle
-// that the parameterization folded (its 3D normal then opposes the surface's) from one that
-// is merely tilted.
+// (bridging) triangles, and per triangle a reference normal, which tells a triangle that the
+// parameterization folded (its 3D normal then opposes the reference) from one that is merely
+// tilted. The reference is the cloud's own normal, oriented by the fold measure
+// (FoldMeasure::right_normal), not the base surface's: where the surface turned its back on
+// the cloud (a pleat, a turned sheet) its normals flip with it, and every well-ordered
+// triangle over that sheet would count as folded while the folds of the sheet itself hid.
 #pragma once
 #include <cstddef>
 #include <vector>
@@ -17,19 +20,27 @@ namespace dbs {
 struct ValidationMesh {
   std::vector<Triangle> triangles;            // counter-clockwise in (u,v)
   std::vector<std::size_t> suspicious;        // indices into triangles, ascending
-  std::vector<Vec3> surface_normals;          // one per triangle
+  std::vector<Vec3> reference_normals;        // one per triangle (reference_normals_at)
 };
 
 /// Throws Error(InvalidArgument) when the cloud's size differs from the result's, and the
 /// errors of delaunay_triangulate. `threads` as Options::threads; the mesh does not depend on it.
 ValidationMesh build_validation_mesh(const Result& result, const PointCloud& cloud, int threads);
 
-/// The base surface's unit normal at the (u,v) centroid of each triangle (vertex indices
-/// must be valid for the result's points).
-std::vector<Vec3> surface_normals_at(const Result& result, const std::vector<Triangle>& triangles, int threads);
+/// Per point of the cloud, the normal towards which a surface agreeing with the result's
+/// (u,v) turns: FoldMeasure::right_normal of the fold measure of the points not left out
+/// (Result::left_out) at the result's noise level. Zero where the measure gives none and for
+/// the points left out.
+std::vector<Vec3> oriented_cloud_normals(const Result& result, const PointCloud& cloud, int threads);
 
-/// Distortion of `triangles` (any mesh over the result's points) judged against the base
-/// surface's normals: measure_distortion with surface_normals_at. Errors as measure_distortion.
+/// Per triangle (vertex indices valid for the result's points), the normal its orientation is
+/// judged against: the sum of its vertices' `cloud_normals` (oriented_cloud_normals), or the
+/// base surface's unit normal at the triangle's (u,v) centroid where that sum is zero (no
+/// vertex has a cloud normal).
+std::vector<Vec3> reference_normals_at(const Result& result, const std::vector<Vec3>& cloud_normals, const std::vector<Triangle>& triangles, int threads);
+
+/// Distortion of `triangles` (any mesh over the result's points) judged against the reference
+/// normals (reference_normals_at). Errors as measure_distortion.
 Distortion measure_result_distortion(const Result& result, const PointCloud& cloud, const std::vector<Triangle>& triangles, DomainScaling scaling, int threads);
 
 }  // namespace dbs
