@@ -67,6 +67,8 @@ void check_input(const CurveProjectionInput& input, double gamma) {
     fail(ErrorCode::InvalidArgument, "project_curve: " + std::to_string(input.directions.size()) + " directions for " + std::to_string(k) + " nodes");
   for (std::size_t f : input.fixed)
     if (f >= k) fail(ErrorCode::OutOfRange, "project_curve: fixed node " + std::to_string(f) + " is not below the node count " + std::to_string(k));
+  if (!input.known_moments.empty() && input.known_moments.size() != k)
+    fail(ErrorCode::InvalidArgument, "project_curve: " + std::to_string(input.known_moments.size()) + " known moments for " + std::to_string(k) + " nodes");
   if (!(gamma >= 0.0 && gamma <= 1.0)) fail(ErrorCode::OutOfRange, "project_curve: gamma = " + significant_text(gamma, 6) + " is outside [0, 1]");
   for (std::size_t i = 0; i < k; ++i)
     if (!is_finite(input.nodes[i]) || !is_finite(input.directions[i])) fail(ErrorCode::NonFinite, "project_curve: node " + std::to_string(i) + " or its direction is not finite");
@@ -96,7 +98,7 @@ std::vector<double> project_curve(const DirectedProjector& projector, const Curv
   NormalEquations system(input, free_index);
   for (std::size_t k = 0; k < k_count; ++k) {
     if (free_index[k] < 0) continue;
-    const RayMoments m = projector.moments(input.nodes[k], input.directions[k]);
+    const RayMoments m = input.known_moments.empty() || input.known_moments[k] == nullptr ? projector.moments(input.nodes[k], input.directions[k]) : *input.known_moments[k];
     // Data weight normalized as explained in the header: c0 / (c0 + 1).
     const double weight = (1.0 - gamma) * m.c0 / (m.c0 + 1.0);
     if (!(weight > 0.0) && gamma == 0.0)

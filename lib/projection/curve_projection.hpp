@@ -29,6 +29,10 @@ struct CurveProjectionInput {
   std::vector<Vec3> nodes;       // K >= 2 nodes p_k
   std::vector<Vec3> directions;  // K directions n_k (unit)
   std::vector<std::size_t> fixed;  // indices of interior nodes that must not move (ends always fixed)
+  /// Empty, or K entries: the ray moments of node k already taken (projector.moments(p_k,
+  /// n_k), the same numbers), or null where project_curve takes them itself. A grid's row and
+  /// column cross at its points, and both would otherwise cast the same ray there.
+  std::vector<const RayMoments*> known_moments;
 };
 
 /// Offsets t_k (t = 0 for fixed nodes). Nodes whose ray meets no cloud weight follow the

@@ -1,7 +1,8 @@
 // Smooth polygonal-curve projection (A3, eqs. 6-9) and its densification (A3.1): a lifted
 // polyline lands on a planar cloud, a flat one follows a sine-shaped cloud, a gap without
 // points is bridged smoothly inside its neighbours' range, fixed nodes stay exactly put, and
-// the offsets are invariant to scaling by 1000 plus a rigid motion.
+// the offsets are invariant to scaling by 1000 plus a rigid motion; moments given for some
+// nodes stand in for their rays.
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -195,6 +196,31 @@ void densify_keeps_every_point_and_spacing(void**) {
   assert_int_equal(capped.nodes.size(), 17);
 }
 
+/// Moments given for some nodes (as a grid's row and column share those of the points where
+/// they cross) stand in for the rays there: the same moments give the same offsets bit for
+/// bit, different ones move the node.
+void known_moments_stand_in_for_the_rays(void**) {
+  const Cloud cloud(strip_cloud(wave));
+  const CurveProjectionInput in = line_at([](double) { return 0.0; });
+  const std::vector<double> plain = project_curve(cloud.projector, in, kGamma);
+  std::vector<RayMoments> moments(in.nodes.size());
+  for (std::size_t k = 0; k < moments.size(); ++k) moments[k] = cloud.projector.moments(in.nodes[k], in.directions[k]);
+  CurveProjectionInput given = in;
+  given.known_moments.assign(in.nodes.size(), nullptr);
+  for (std::size_t k = 0; k < moments.size(); k += 3) given.known_moments[k] = &moments[k];
+  assert_true(project_curve(cloud.projector, given, kGamma) == plain);
+  for (std::size_t k = 0; k < moments.size(); ++k) given.known_moments[k] = &moments[k];
+  assert_true(project_curve(cloud.projector, given, kGamma) == plain);
+  // Node 40's moments with the weighted mean 3 units higher: the node follows them up.
+  RayMoments raised = moments[40];
+  raised.mean.z() += 3.0;
+  given.known_moments[40] = &raised;
+  const std::vector<double> moved = project_curve(cloud.projector, given, kGamma);
+  assert_true(moved[40] > plain[40] + 0.5);
+  given.known_moments.pop_back();
+  core_test::expect_error([&] { project_curve(cloud.projector, given, kGamma); }, ErrorCode::InvalidArgument, {"80 known moments", "81 nodes"});
+}
+
 void bad_input_is_rejected(void**) {
   const Cloud cloud(strip_cloud([](double) { return 0.0; }, [](double x) { return x < 40.0; }));
   CurveProjectionInput in = line_at([](double) { return 0.0; });
@@ -230,6 +256,7 @@ int main() {
       cmocka_unit_test(offsets_are_invariant_to_scale_and_rigid_motion),
       cmocka_unit_test(pure_smoothing_keeps_a_straight_line),
       cmocka_unit_test(densify_keeps_every_point_and_spacing),
+      cmocka_unit_test(known_moments_stand_in_for_the_rays),
       cmocka_unit_test(bad_input_is_rejected),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
