@@ -15,7 +15,7 @@ constexpr std::size_t kMaxSectionNodes = 512;
 /// A3 on one grid section (row or column): densify, project (and refine), read the offsets
 /// of the section's own points. Its two ends lie on the boundary and stay fixed.
 /// `point_moments[k]` are the ray moments of the interior points k (1 .. size - 2), taken
-/// once for the row and the column that cross there (grid_point_moments).
+/// once in project_grid for the row and the column that cross there.
 std::vector<double> project_section(const std::vector<Vec3>& points, const std::vector<Vec3>& normals, const std::vector<const RayMoments*>& point_moments, const DirectedProjector& projector, double gamma,
                                     const RefinementSettings& refinement, RefinementCounts* counts, WorkMeter* meter) {
   double length = 0.0;
