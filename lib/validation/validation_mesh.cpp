@@ -37,21 +37,34 @@ std::vector<Triangle> triangulate_kept(const Result& result) {
 
 }  // namespace
 
-std::vector<Vec3> oriented_cloud_normals(const Result& result, const PointCloud& cloud, int threads) {
+std::vector<Vec3> oriented_cloud_normals(const Result& result, const PointCloud& cloud, int threads, std::size_t max_points) {
   require_matching(result, cloud);
   std::vector<std::size_t> kept;
-  std::vector<Vec3> points;
-  std::vector<double> u, v;
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    if (result.left_out(i)) continue;
-    kept.push_back(i);
-    points.push_back(cloud.points()[i]);
-    u.push_back(result.u[i]);
-    v.push_back(result.v[i]);
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    if (!result.left_out(i)) kept.push_back(i);
+  // The judged points: every kept one, or an even sample of max_points of them.
+  const std::size_t n = kept.size(), count = std::min(n, std::max<std::size_t>(max_points, 1));
+  std::vector<std::size_t> judged(count);
+  std::vector<Vec3> points(count);
+  std::vector<double> u(count), v(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    judged[k] = kept[static_cast<std::size_t>(static_cast<unsigned long long>(k) * n / count)];
+    points[k] = cloud.points()[judged[k]];
+    u[k] = result.u[judged[k]];
+    v[k] = result.v[judged[k]];
   }
   std::vector<Vec3> normals(cloud.size(), Vec3::Zero());
   const FoldMeasure folds = measure_folds(points, u, v, result.noise, threads);
-  for (std::size_t k = 0; k < kept.size(); ++k) normals[kept[k]] = folds.right_normal[k];
+  for (std::size_t k = 0; k < count; ++k) normals[judged[k]] = folds.right_normal[k];
+  if (count == n) return normals;
+  // The others take the normal of their nearest judged point (each writes only its own).
+  std::vector<char> is_judged(cloud.size(), 0);
+  for (std::size_t i : judged) is_judged[i] = 1;
+  const CloudIndex index(cloud.points(), judged, IndexBuild{resolve_threads(threads)});
+  parallel_for(n, resolve_threads(threads), [&](std::size_t k) {
+    const std::size_t i = kept[k];
+    if (!is_judged[i]) normals[i] = normals[index.nearest(cloud.points()[i])];
+  });
   return normals;
 }
 

@@ -4,8 +4,8 @@
 // middle column pulled back past its neighbour, so Su x Sv turns against the cloud there) the
 // mesh must still count no folded triangle, where judging by the surface's normals counted
 // every triangle over the band. A real fold of the (u,v) must still count, with the surface
-// agreeing or not; and the normals of a cloud without a surface-like neighbourhood fall back to
-// the surface's.
+// agreeing or not; triangles without a cloud normal fall back to the surface's; and judged on a
+// sample (a large cloud), the other points take their nearest judged point's normal.
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -139,6 +139,34 @@ void normals_of_a_point_without_one_come_from_the_surface(void**) {
   core_test::expect_error([&] { reference_normals_at(r, std::vector<Vec3>(3), triangles, 1); }, ErrorCode::InvalidArgument, {"3 cloud normals", "2500 points"});
 }
 
+/// Judged on an even sample (as a cloud above kMaxNormalPoints is), every other point takes
+/// the normal of its nearest judged point: on a curved height field, whose normals differ from
+/// point to point, so that the wrong neighbour's would show; the map still folds nothing.
+void a_sample_of_judged_points_gives_the_others_their_normals(void**) {
+  const std::vector<Vec3> points = dbs_test::random_points(dbs_test::height_field(), 2500, 11);
+  const PointCloud cloud(points);
+  const Result r = parameterize(cloud, dbs_test::boundary_of(dbs_test::height_field(), 40), Options());
+  const std::vector<Vec3> all = oriented_cloud_normals(r, cloud, 2);
+  const std::vector<Vec3> sampled = oriented_cloud_normals(r, cloud, 2, 500);
+  assert_int_equal(sampled.size(), points.size());
+  // The judged ones: every fifth point (2,500 / 500), each with the normal of a whole judgement
+  // of its sample's own.
+  std::vector<std::size_t> judged;
+  for (std::size_t i = 0; i < points.size(); i += 5) judged.push_back(i);
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    std::size_t nearest = judged[0];
+    for (std::size_t j : judged)
+      if ((points[j] - points[i]).squaredNorm() < (points[nearest] - points[i]).squaredNorm()) nearest = j;
+    assert_true(sampled[i] == sampled[nearest]);
+    assert_true(sampled[i].norm() > 0.99 && sampled[i].dot(all[i]) > 0.9);  // near its own normal, the same way round
+    if (i % 5 != 0 && sampled[i] != all[i]) ++differ;
+  }
+  assert_true(differ > points.size() / 2);  // the others' normals are borrowed, not their own
+  const ValidationMesh mesh = build_validation_mesh(r, cloud, 2);
+  assert_int_equal(measure_distortion(points, r.u, r.v, mesh.triangles, DomainScaling::PerAxis, reference_normals_at(r, sampled, mesh.triangles, 2)).summary.folded, 0);
+}
+
 }  // namespace
 
 int main() {
@@ -147,6 +175,7 @@ int main() {
       cmocka_unit_test(a_pleated_surface_folds_no_triangle_of_an_ordered_map),
       cmocka_unit_test(a_real_fold_counts_under_either_surface),
       cmocka_unit_test(normals_of_a_point_without_one_come_from_the_surface),
+      cmocka_unit_test(a_sample_of_judged_points_gives_the_others_their_normals),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
