@@ -764,7 +764,8 @@ typedef struct dbs_distortion dbs_distortion;
  *  of the parameterization shows although every Delaunay triangle turns the same way in
  *  (u,v). The reference (since 0.4) is the cloud's own normal at the triangle's vertices,
  *  oriented by the fold measure (DBS_STAT_FOLDED_SHARE's; the measure of every point not left
- *  out), or the base surface's normal at the triangle's (u,v) centre where the measure gives
+ *  out, or above 200,000 of them of an even sample of 200,000, the others taking their nearest
+ *  judged point's), or the base surface's normal at the triangle's (u,v) centre where it gives
  *  none; before 0.4 it was always the surface's, which turns over with a pleated surface and
  *  so marked the well-ordered triangles over a pleat as folded.
  *  Returns DBS_ERR_NULL_ARGUMENT, DBS_ERR_OUT_OF_RANGE (scaling), DBS_ERR_NO_MEMORY. \since 0.1 */
