@@ -522,24 +522,32 @@ FoldMeasure FoldNeighbourhoods::Impl::judge(const std::vector<double>& u, const 
   return m;
 }
 
-std::vector<std::int8_t> spread_verdicts(const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter) {
-  if (judged.size() != state.size() || judged.empty())
-    fail(ErrorCode::InvalidArgument, "spread_verdicts: " + std::to_string(judged.size()) + " judged points but " + std::to_string(state.size()) + " verdicts");
+template <class T>
+std::vector<T> spread_from_judged(const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<T>& values, int threads, WorkMeter* meter) {
+  if (judged.size() != values.size() || judged.empty())
+    fail(ErrorCode::InvalidArgument, "spread_from_judged: " + std::to_string(judged.size()) + " judged points but " + std::to_string(values.size()) + " values");
   const std::size_t n = points.size();
   std::vector<std::size_t> slot(n, 0);
   for (std::size_t k = 0; k < judged.size(); ++k) {
-    if (judged[k] >= n) fail(ErrorCode::InvalidArgument, "spread_verdicts: judged point " + std::to_string(judged[k]) + " is not one of the " + std::to_string(n) + " points");
+    if (judged[k] >= n) fail(ErrorCode::InvalidArgument, "spread_from_judged: judged point " + std::to_string(judged[k]) + " is not one of the " + std::to_string(n) + " points");
     slot[judged[k]] = k;
   }
   const CloudIndex index(points, judged);
-  std::vector<std::int8_t> out(n);
+  std::vector<T> out(n);
   auto body = [&](std::size_t i) {
-    out[i] = state[slot[index.nearest(points[i])]];
+    out[i] = values[slot[index.nearest(points[i])]];
     if (meter) meter->add();
   };
   if (meter) meter->run(n, threads, body);
   else parallel_for(n, threads, body);
   return out;
+}
+
+template std::vector<std::int8_t> spread_from_judged(const std::vector<Vec3>&, const std::vector<std::size_t>&, const std::vector<std::int8_t>&, int, WorkMeter*);
+template std::vector<Vec3> spread_from_judged(const std::vector<Vec3>&, const std::vector<std::size_t>&, const std::vector<Vec3>&, int, WorkMeter*);
+
+std::vector<std::int8_t> spread_verdicts(const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter) {
+  return spread_from_judged(points, judged, state, threads, meter);
 }
 
 }  // namespace dbs

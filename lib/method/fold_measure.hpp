@@ -121,9 +121,14 @@ class FoldNeighbourhoods {
   std::unique_ptr<Impl> impl_;
 };
 
-/// The verdicts of measure_folds on the points `judged` (indices into `points`, distinct,
-/// `state` one per judged point) spread over every point: each takes the verdict of the
-/// nearest judged point (ties: the lower index). Deterministic for any thread count.
+/// Values given on the points `judged` (indices into `points`, distinct, one value each)
+/// spread over every point: each takes the value of the nearest judged point (ties: the lower
+/// index). Deterministic for any thread count. For std::int8_t (verdicts) and Vec3 (normals).
+template <class T>
+std::vector<T> spread_from_judged(const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<T>& values, int threads, WorkMeter* meter = nullptr);
+
+/// The verdicts of measure_folds on the points `judged` spread over every point
+/// (spread_from_judged).
 std::vector<std::int8_t> spread_verdicts(const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter = nullptr);
 
 /// Number of points i for which some j != i has |u_i - u_j| <= 1e-12 and |v_i - v_j| <= 1e-12

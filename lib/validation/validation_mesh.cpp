@@ -55,16 +55,14 @@ std::vector<Vec3> oriented_cloud_normals(const Result& result, const PointCloud&
   }
   std::vector<Vec3> normals(cloud.size(), Vec3::Zero());
   const FoldMeasure folds = measure_folds(points, u, v, result.noise, threads);
-  for (std::size_t k = 0; k < count; ++k) normals[judged[k]] = folds.right_normal[k];
-  if (count == n) return normals;
-  // The others take the normal of their nearest judged point (each writes only its own).
-  std::vector<char> is_judged(cloud.size(), 0);
-  for (std::size_t i : judged) is_judged[i] = 1;
-  const CloudIndex index(cloud.points(), judged, IndexBuild{resolve_threads(threads)});
-  parallel_for(n, resolve_threads(threads), [&](std::size_t k) {
-    const std::size_t i = kept[k];
-    if (!is_judged[i]) normals[i] = normals[index.nearest(cloud.points()[i])];
-  });
+  if (count == n) {
+    for (std::size_t k = 0; k < count; ++k) normals[judged[k]] = folds.right_normal[k];
+    return normals;
+  }
+  // The others take the normal of their nearest judged point; the points left out keep none.
+  normals = spread_from_judged(cloud.points(), judged, folds.right_normal, resolve_threads(threads));
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    if (result.left_out(i)) normals[i] = Vec3::Zero();
   return normals;
 }
 
