@@ -6,12 +6,6 @@ namespace dbs {
 
 namespace {
 
-/// Node spacing of a densified grid section, in units of h: a few nodes per data feature.
-constexpr double kNodeSpacing = 2.0;
-/// Most nodes in one section: bounds the cost of a section on a very large patch, where the
-/// spacing then grows beyond kNodeSpacing h.
-constexpr std::size_t kMaxSectionNodes = 512;
-
 /// A3 on one grid section (row or column): densify, project (and refine), read the offsets
 /// of the section's own points. Its two ends lie on the boundary and stay fixed.
 /// `point_moments[k]` are the ray moments of the interior points k (1 .. size - 2), taken

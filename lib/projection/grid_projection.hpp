@@ -4,7 +4,9 @@
 // stay on the boundary. Each section is densified to nodes about 2 h apart (at most 512 per
 // section, so a very large patch gets a coarser spacing); the sections are projected in
 // parallel, each writing only its own offsets, so the result does not depend on the thread
-// count.
+// count. A row and a column both put a node on the grid point where they cross, with its
+// unit normal: that ray is cast once, before the sections, and both take its moments
+// (CurveProjectionInput::known_moments), the result being the one of each section alone.
 #pragma once
 #include "base_surface.hpp"
 #include "curve_projection.hpp"
@@ -14,12 +16,19 @@
 
 namespace dbs {
 
+/// Node spacing of a densified grid section, in units of h: a few nodes per data feature.
+constexpr double kNodeSpacing = 2.0;
+/// Most nodes in one section: bounds the cost of a section on a very large patch, where the
+/// spacing then grows beyond kNodeSpacing h.
+constexpr std::size_t kMaxSectionNodes = 512;
+
 /// Samples `surface` on an nu x nv grid, projects it onto the cloud, returns the projected
 /// grid (border points unchanged). `gamma` as in eq. (6). The move is pleat-free
 /// (pleat_guard.hpp): `out_damped_nodes`, when given, receives the number of nodes whose
 /// offset the guard reduced. With `refinement.enabled`, each section's linear solution is
 /// refined with Ceres (curve_refinement.hpp) before the guard; `counts`, when given, is added
-/// to. Up to `threads` threads; `meter` (may be null) counts a unit per densified node.
+/// to. Up to `threads` threads; `meter` (may be null) counts a unit per ray cast (a densified
+/// node; a grid point's once).
 Grid project_grid(const BaseSurface& surface, int nu, int nv, const DirectedProjector& projector, double gamma, std::size_t* out_damped_nodes = nullptr,
                   const RefinementSettings& refinement = RefinementSettings(), RefinementCounts* counts = nullptr, int threads = 1, WorkMeter* meter = nullptr);
 

@@ -53,14 +53,14 @@ std::vector<Vec3> oriented_cloud_normals(const Result& result, const PointCloud&
     u[k] = result.u[judged[k]];
     v[k] = result.v[judged[k]];
   }
-  std::vector<Vec3> normals(cloud.size(), Vec3::Zero());
   const FoldMeasure folds = measure_folds(points, u, v, result.noise, threads);
   if (count == n) {
+    std::vector<Vec3> normals(cloud.size(), Vec3::Zero());
     for (std::size_t k = 0; k < count; ++k) normals[judged[k]] = folds.right_normal[k];
     return normals;
   }
   // The others take the normal of their nearest judged point; the points left out keep none.
-  normals = spread_from_judged(cloud.points(), judged, folds.right_normal, resolve_threads(threads));
+  std::vector<Vec3> normals = spread_from_judged(cloud.points(), judged, folds.right_normal, resolve_threads(threads));
   for (std::size_t i = 0; i < cloud.size(); ++i)
     if (result.left_out(i)) normals[i] = Vec3::Zero();
   return normals;

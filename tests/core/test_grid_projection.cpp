@@ -1,6 +1,7 @@
 // Grid projection (section 5.2): a grid on the flat Coons patch of a height field's boundary
 // moves onto the cloud along its normals (closer with each evolution), its border stays
-// bitwise on the boundary, and the result is invariant to scaling by 1000 plus a rigid motion.
+// bitwise on the boundary, the result is invariant to scaling by 1000 plus a rigid motion, and
+// it is bit for bit that of every section projected alone (the shared rays change nothing).
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -114,6 +115,61 @@ void grid_is_invariant_to_scale_and_rigid_motion(void**) {
   for (std::size_t k = 0; k < g.points.size(); ++k) assert_true((moved.points[k] - move(g.points[k])).norm() <= 1e-9 * 1000.0 * h);
 }
 
+/// The offsets of one section projected alone (densified, every node's ray its own), at its
+/// own points.
+std::vector<double> section_alone(const std::vector<Vec3>& points, const std::vector<Vec3>& normals, const DirectedProjector& projector) {
+  double length = 0.0;
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) length += (points[k + 1] - points[k]).norm();
+  const double spacing = std::max(kNodeSpacing * projector.length_scale(), length / static_cast<double>(kMaxSectionNodes));
+  std::vector<std::size_t> original;
+  const CurveProjectionInput input = densify_polygon(points, normals, spacing, original, kMaxSectionNodes);
+  const std::vector<double> t = project_curve(projector, input, kGamma);
+  std::vector<double> out;
+  for (std::size_t k : original) out.push_back(t[k]);
+  return out;
+}
+
+/// The rows and columns share the rays at the grid points where they cross: the grid is bit for
+/// bit the one of every section projected alone (a 7 x 5 grid on the evolved height field, so
+/// that a row and a column index a grid point differently and its normals are tilted).
+void grid_is_that_of_its_sections_alone(void**) {
+  const std::vector<Vec3> pts = height_cloud();
+  CloudIndex index(pts);
+  const DirectedProjector projector(index, cloud_spacing(index));
+  const Boundary boundary = square([](const Vec3& p) { return p; });
+  const BaseSurface surface(boundary, project_grid(BaseSurface(boundary), 9, 9, projector, kGamma));
+  const int nu = 7, nv = 5;
+  std::size_t damped = 1;
+  const Grid g = project_grid(surface, nu, nv, projector, kGamma, &damped);
+  assert_int_equal(damped, 0);  // no node held back: the move is the offsets' mean
+  const Grid start = surface.sample(nu, nv);
+  Grid normals(nu, nv);
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) normals(i, j) = surface.normal(start.u(i), start.v(j));
+  std::vector<double> row(start.points.size()), column(start.points.size());
+  for (int j = 1; j + 1 < nv; ++j) {
+    std::vector<Vec3> p, n;
+    for (int i = 0; i < nu; ++i) p.push_back(start(i, j)), n.push_back(normals(i, j));
+    const std::vector<double> t = section_alone(p, n, projector);
+    for (int i = 0; i < nu; ++i) row[static_cast<std::size_t>(j * nu + i)] = t[static_cast<std::size_t>(i)];
+  }
+  for (int i = 1; i + 1 < nu; ++i) {
+    std::vector<Vec3> p, n;
+    for (int j = 0; j < nv; ++j) p.push_back(start(i, j)), n.push_back(normals(i, j));
+    const std::vector<double> t = section_alone(p, n, projector);
+    for (int j = 0; j < nv; ++j) column[static_cast<std::size_t>(j * nu + i)] = t[static_cast<std::size_t>(j)];
+  }
+  double moved = 0.0;
+  for (int j = 1; j + 1 < nv; ++j)
+    for (int i = 1; i + 1 < nu; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j * nu + i);
+      const Vec3 expected = start.points[k] + 0.5 * (row[k] + column[k]) * normals.points[k];
+      assert_true(same_bits(g.points[k], expected));
+      moved = std::max(moved, (g.points[k] - start.points[k]).norm());
+    }
+  assert_true(moved > 0.0);
+}
+
 void grid_without_interior_is_the_sample(void**) {
   const std::vector<Vec3> pts = height_cloud();
   CloudIndex index(pts);
@@ -136,6 +192,7 @@ int main() {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(grid_moves_onto_height_field),
       cmocka_unit_test(grid_is_invariant_to_scale_and_rigid_motion),
+      cmocka_unit_test(grid_is_that_of_its_sections_alone),
       cmocka_unit_test(grid_without_interior_is_the_sample),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
