@@ -303,10 +303,10 @@ struct SurfaceProjector::Impl {
     return capped;
   }
 
-  /// Gauss-Newton's Hessian, plus the frozen curvature term where that keeps it positive
-  /// definite.
-  static Hessian with_curvature(const Hessian& gauss_newton, const Descent& d) {
-    const Hessian h{gauss_newton.uu + d.curvature.uu, gauss_newton.uv + d.curvature.uv, gauss_newton.vv + d.curvature.vv};
+  /// Gauss-Newton's Hessian plus a curvature term r . S'' (Newton's Hessian) where the sum
+  /// stays positive definite, so that the step still descends; else Gauss-Newton's.
+  static Hessian with_curvature(const Hessian& gauss_newton, const Hessian& curvature) {
+    const Hessian h{gauss_newton.uu + curvature.uu, gauss_newton.uv + curvature.uv, gauss_newton.vv + curvature.vv};
     return h.uu > 0.0 && h.vv > 0.0 && h.uu * h.vv - h.uv * h.uv > 1e-14 * h.uu * h.vv ? h : gauss_newton;
   }
 
@@ -353,15 +353,10 @@ struct SurfaceProjector::Impl {
     return true;
   }
 
-  /// Newton's Hessian of |S - q|^2 / 2: Gauss-Newton's J^T J plus r . S'' (r = S - q) where
-  /// the sum stays positive definite, so that the step still descends; else Gauss-Newton's.
-  /// One evaluation of the second derivatives at the iterate.
+  /// Newton's Hessian of |S - q|^2 / 2 at the iterate (see with_curvature): one evaluation
+  /// of the second derivatives.
   Hessian newton_hessian(const Vec3& q, const Iterate& it) const {
-    const Hessian gauss_newton = gauss_newton_hessian(it.s);
-    const SecondDerivatives s = surface.second_derivatives(it.x.x(), it.x.y());
-    const Vec3 r = it.s.p - q;
-    const Hessian h{gauss_newton.uu + r.dot(s.uu), gauss_newton.uv + r.dot(s.uv), gauss_newton.vv + r.dot(s.vv)};
-    return h.uu > 0.0 && h.vv > 0.0 && h.uu * h.vv - h.uv * h.uv > 1e-14 * h.uu * h.vv ? h : gauss_newton;
+    return with_curvature(gauss_newton_hessian(it.s), curvature_term(q, it, surface.second_derivatives(it.x.x(), it.x.y())));
   }
 
   /// Gauss-Newton on |S(u,v) - q|^2 over [0,1]^2 with an active set: a coordinate on a bound
@@ -396,7 +391,7 @@ struct SurfaceProjector::Impl {
     for (; d.iteration < kMaxIterations; ++d.iteration) {
       const Vec2 g = gradient(q, it);
       held = held_coordinates(it, g);
-      const Hessian h = kSteps == Steps::Newton ? newton_hessian(q, it) : kSteps == Steps::Curved ? with_curvature(gauss_newton_hessian(it.s), d) : gauss_newton_hessian(it.s);
+      const Hessian h = kSteps == Steps::Newton ? newton_hessian(q, it) : kSteps == Steps::Curved ? with_curvature(gauss_newton_hessian(it.s), d.curvature) : gauss_newton_hessian(it.s);
       const double huu = h.uu, hvv = h.vv, huv = h.uv;
       Vec2 step = Vec2::Zero();
       if (!held[0] && !held[1]) {
