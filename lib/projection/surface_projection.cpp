@@ -341,7 +341,7 @@ struct SurfaceProjector::Impl {
     const Vec2 s = it.x - from;
     const double s2 = s.squaredNorm();
     if (!(s2 > 0.0) || s2 > kFreezeNear * kFreezeNear) return false;
-    if (std::isfinite(d.previous)) {
+    if (d.iteration > 0) {
       if (!(std::sqrt(s2) >= kFreezeRate * d.previous)) return false;
     } else {
       const Hessian a = gauss_newton_hessian(it.s);
