@@ -158,17 +158,22 @@ void SplineDisplacement::add_to_interior(Grid& grid) const {
   std::vector<SpanBasis> bu(static_cast<std::size_t>(grid.nu)), bv(static_cast<std::size_t>(grid.nv));
   for (int i = 0; i < grid.nu; ++i) bu[static_cast<std::size_t>(i)] = span_basis(grid.u(i), nu_, false);
   for (int j = 0; j < grid.nv; ++j) bv[static_cast<std::size_t>(j)] = span_basis(grid.v(j), nv_, false);
-  for (int j = 1; j + 1 < grid.nv; ++j) {
-    const SpanBasis& b_v = bv[static_cast<std::size_t>(j)];
+  // Every control row blended along u once at each interior column: eval() blends the same
+  // four coefficients with the same weights (so the same bits), for every row of the grid
+  // that needs that control row instead of once.
+  const std::size_t columns = static_cast<std::size_t>(grid.nu), control_rows = static_cast<std::size_t>(nv_ + 2);
+  std::vector<Vec3> along_u(control_rows * columns);
+  for (std::size_t r = 0; r < control_rows; ++r) {
     for (int i = 1; i + 1 < grid.nu; ++i) {
       const SpanBasis& b_u = bu[static_cast<std::size_t>(i)];
-      Vec3 along_u[4];
-      for (int b = 0; b < 4; ++b) {
-        const Vec3* row = &coeffs_[static_cast<std::size_t>(b_v.first + b) * (nu_ + 2) + b_u.first];
-        along_u[b] = blend(b_u, row[0], row[1], row[2], row[3]);
-      }
-      grid(i, j) += blend(b_v, along_u[0], along_u[1], along_u[2], along_u[3]);
+      const Vec3* row = &coeffs_[r * (nu_ + 2) + b_u.first];
+      along_u[r * columns + static_cast<std::size_t>(i)] = blend(b_u, row[0], row[1], row[2], row[3]);
     }
+  }
+  for (int j = 1; j + 1 < grid.nv; ++j) {
+    const SpanBasis& b_v = bv[static_cast<std::size_t>(j)];
+    const Vec3* first = &along_u[static_cast<std::size_t>(b_v.first) * columns];
+    for (int i = 1; i + 1 < grid.nu; ++i) grid(i, j) += blend(b_v, first[i], first[columns + i], first[2 * columns + i], first[3 * columns + i]);
   }
 }
 
