@@ -80,10 +80,10 @@ nanoflann::SearchParams exact_search(bool sorted) { return nanoflann::SearchPara
 struct RayBoxBound {
   Vec3 p, u;
   double bound;
-  /// The axes u x (each coordinate axis), their absolute values and lengths: the same for
+  /// The axes u x (each coordinate axis), their absolute values and squared lengths: the same for
   /// every box of one query, computed once.
   std::array<Vec3, 3> cross, cross_abs;
-  std::array<double, 3> cross_length;
+  std::array<double, 3> cross_length2;
 
   /// A point's own test, |d|^2 |d x u|^2 <= bound^2, scales as length^4: for a cloud near
   /// 1e-100 across both sides underflow to 0 (and every point passed), near 1e75 they come
@@ -91,17 +91,17 @@ struct RayBoxBound {
   /// 1/sqrt(bound): scaling by a power of two is exact, so wherever the unscaled test did not
   /// underflow or overflow it gives the same answer, bit for bit.
   double scale = 1.0;
-  double scaled_bound2;
+  double scaled_bound, scaled_bound2;
 
   RayBoxBound(const Vec3& point, const Vec3& unit, double b) : p(point), u(unit), bound(b) {
     cross = {{Vec3(0.0, -u.z(), u.y()), Vec3(u.z(), 0.0, -u.x()), Vec3(-u.y(), u.x(), 0.0)}};
     for (int a = 0; a < 3; ++a) {
       cross_abs[a] = cross[a].cwiseAbs();
-      cross_length[a] = cross[a].norm();
+      cross_length2[a] = cross[a].squaredNorm();
     }
     if (b > 0.0 && std::isfinite(b)) scale = std::ldexp(1.0, -std::ilogb(b) / 2);
-    const double scaled = b * scale * scale;
-    scaled_bound2 = scaled * scaled;
+    scaled_bound = b * scale * scale;
+    scaled_bound2 = scaled_bound * scaled_bound;
   }
 
   /// The point test on d = x - p.
@@ -110,26 +110,30 @@ struct RayBoxBound {
     return scaled.squaredNorm() * scaled.cross(u).squaredNorm() <= scaled_bound2;
   }
 
+  /// Whether the box [lo, hi] may hold a point that holds(): false once r rho > bound for
+  /// r the box's least distance to p and rho a lower bound of its distance to the line, the
+  /// separation of the box along one axis (the part of its centre's offset across the line,
+  /// or u x a coordinate axis) less its half-extent there. Compared squared, in the scaled
+  /// units of holds() (where the bound is near 1, so the squares neither underflow nor
+  /// overflow): one division instead of a square root and a division an axis.
   bool may_hold(const Vec3& lo, const Vec3& hi) const {
-    const Vec3 outside = (lo - p).cwiseMax(p - hi).cwiseMax(0.0);
+    const Vec3 outside = scale * (lo - p).cwiseMax(p - hi).cwiseMax(0.0);
     // The box point nearest p has r rho <= r^2 (distance to the line <= distance to p), so a
     // box this close to p is kept without looking at the line.
     const double r2_min = outside.squaredNorm();
-    if (r2_min <= bound) return true;
-    const double r_min = std::sqrt(r2_min);
-    const Vec3 half = 0.5 * (hi - lo);
-    const Vec3 offset = 0.5 * (lo + hi) - p;
-    // rho_min only grows from axis to axis, so the box is refused as soon as one axis
-    // separates it far enough (the same answer as the maximum over all four).
-    double rho_min = 0.0;
+    if (r2_min <= scaled_bound) return true;
+    // rho^2 above this refuses the box.
+    const double rho2_limit = scaled_bound2 / r2_min;
+    const Vec3 half = (0.5 * scale) * (hi - lo);
+    const Vec3 offset = scale * (0.5 * (lo + hi) - p);
+    auto separates = [&](const Vec3& axis, const Vec3& axis_abs, double length2) {
+      const double gap = std::abs(axis.dot(offset)) - axis_abs.dot(half);  // rho times |axis|
+      return gap > 0.0 && gap * gap > rho2_limit * length2;
+    };
     const Vec3 across = offset - offset.dot(u) * u;
-    const double across_length = across.norm();
-    if (across_length > 0.0) rho_min = std::max(rho_min, (std::abs(across.dot(offset)) - across.cwiseAbs().dot(half)) / across_length);
-    if (r_min * rho_min > bound) return false;
-    for (int a = 0; a < 3; ++a) {
-      if (cross_length[a] > 0.0) rho_min = std::max(rho_min, (std::abs(cross[a].dot(offset)) - cross_abs[a].dot(half)) / cross_length[a]);
-      if (r_min * rho_min > bound) return false;
-    }
+    if (separates(across, across.cwiseAbs(), across.squaredNorm())) return false;
+    for (int a = 0; a < 3; ++a)
+      if (separates(cross[a], cross_abs[a], cross_length2[a])) return false;
     return true;
   }
 };
