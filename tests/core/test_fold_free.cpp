@@ -260,6 +260,11 @@ void hard_shapes_stay_within_their_bounds(void**) {
   for (const auto& b : bounds) {
     const FoldShape shape = dbs_folds::fold_shape(b.name);
     const Run r = run(shape);
+    // The mushroom's and the dome's roots end 23-26 times above the target, but the median
+    // distance of their points is 0.02-0.17 times it: only the feature stands off the
+    // surface, and the root is not evolved again from other starts (evolve.hpp), which both
+    // did and then dropped. The other shapes' roots end within 10 times the target.
+    assert_int_equal(r.result.patches.at(0).restarts, 0);
     assert_true(r.folds.share <= b.max_share);
     assert_true(r.result.mean_distance <= b.max_mean);
     assert_true(r.result.turned_share <= b.max_turned);
@@ -417,6 +422,9 @@ void hard_shape_is_scale_and_thread_invariant(void**) {
   const Run c1 = run(closed, one), c2 = run(closed, two);
   assert_true(c1.result.u == c2.result.u && c1.result.v == c2.result.v && c1.result.distance == c2.result.distance);
   assert_true(c1.result.mean_distance < 0.01);  // the seed was taken (0.15 without it)
+  // Most of the cap lies far from the first root surface (its median distance 0.71-0.77, 220
+  // times the target): both restarts are tried, the 3 x 3 warm-up and the seed.
+  assert_int_equal(c1.result.patches.at(0).restarts, 2);
 }
 
 }  // namespace
