@@ -119,7 +119,10 @@ std::vector<int> refit_repaired_leaves(Result& result, const std::vector<Vec3>& 
   std::vector<int> leaves;
   for (std::size_t id = 0; id < touched.size(); ++id)
     if (touched[id]) leaves.push_back(static_cast<int>(id));
-  // Each leaf writes only its own patch, each point only its own distance.
+  // Each leaf writes only its own patch, each point only its own distance; the fits share
+  // the cardinal functions of the leaves' grid sizes, made here.
+  GridFitBasis basis;
+  for (int id : leaves) basis.add(result.patches[static_cast<std::size_t>(id)].grid.nu, result.patches[static_cast<std::size_t>(id)].grid.nv);
   std::vector<char> kept(leaves.size(), 0);
   parallel_for(leaves.size(), threads, [&](std::size_t k) {
     const std::size_t id = static_cast<std::size_t>(leaves[k]);
@@ -128,7 +131,7 @@ std::vector<int> refit_repaired_leaves(Result& result, const std::vector<Vec3>& 
     for (std::size_t i : members[id]) before.push_back((result.evaluate(result.u[i], result.v[i]) - points[i]).norm());
     const BaseSurface old_surface = leaf.surface;
     const Grid old_grid = leaf.grid;
-    if (!fit_grid_to_parameters(leaf, data[id], points, result.u, result.v)) return;  // not refitted: its repaired points go back
+    if (!fit_grid_to_parameters(leaf, data[id], points, result.u, result.v, &basis)) return;  // not refitted: its repaired points go back
     for (std::size_t i : members[id]) after.push_back((result.evaluate(result.u[i], result.v[i]) - points[i]).norm());
     // A fit that would move the surface away from most of the leaf's points is not kept.
     if (median(after) > median(before)) {

@@ -1,34 +1,53 @@
 #include "grid_fit.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 
 #include "base_surface.hpp"
 #include "spline_displacement.hpp"
 
 namespace dbs {
 
-bool fit_grid_to_parameters(Patch& leaf, const std::vector<std::size_t>& ids, const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v) {
+void GridFitBasis::add(int nu, int nv) {
+  // A grid the fit refuses needs none (and a large one's would be large).
+  if (nu < 3 || nv < 3 || (nu - 2) * (nv - 2) > kMaxRefitNodes || made_.count({nu, nv}) != 0) return;
+  Cardinals c;
+  c.phi.reserve(static_cast<std::size_t>(std::max(nu - 2, 0)));
+  c.psi.reserve(static_cast<std::size_t>(std::max(nv - 2, 0)));
+  for (int i = 1; i + 1 < nu; ++i) {
+    Grid unit(nu, nv);
+    unit(i, 1) = Vec3(1.0, 0.0, 0.0);
+    c.phi.emplace_back(unit);
+  }
+  for (int j = 1; j + 1 < nv; ++j) {
+    Grid unit(nu, nv);
+    unit(1, j) = Vec3(1.0, 0.0, 0.0);
+    c.psi.emplace_back(unit);
+  }
+  made_.emplace(std::make_pair(nu, nv), std::move(c));
+}
+
+const GridFitBasis::Cardinals* GridFitBasis::find(int nu, int nv) const {
+  const auto found = made_.find({nu, nv});
+  return found == made_.end() ? nullptr : &found->second;
+}
+
+bool fit_grid_to_parameters(Patch& leaf, const std::vector<std::size_t>& ids, const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v,
+                            const GridFitBasis* basis) {
   const Grid& grid = leaf.grid;
   const int nu = grid.nu, nv = grid.nv;
   if (nu < 3 || nv < 3 || ids.empty()) return false;
   const int mi = nu - 2, mj = nv - 2, m = mi * mj;
   if (m > kMaxRefitNodes) return false;  // a dense m x m system beyond this costs more than it is worth
   const BaseSurface coons(leaf.surface.boundary());
-  // The spline is a tensor product of linear 1D interpolations, so the displacement of a
-  // unit value at node (i,j) is phi_i(s) psi_j(t), both cardinal (1 at their own site, 0 at
-  // the others): phi_i is read along the grid line t = v(1) of a unit at (i,1), psi_j along
-  // s = u(1) of a unit at (1,j).
-  std::vector<SplineDisplacement> phi, psi;
-  for (int i = 1; i + 1 < nu; ++i) {
-    Grid unit(nu, nv);
-    unit(i, 1) = Vec3(1.0, 0.0, 0.0);
-    phi.emplace_back(unit);
+  GridFitBasis own;
+  const GridFitBasis::Cardinals* cardinals = basis ? basis->find(nu, nv) : nullptr;
+  if (!cardinals) {
+    own.add(nu, nv);
+    cardinals = own.find(nu, nv);
   }
-  for (int j = 1; j + 1 < nv; ++j) {
-    Grid unit(nu, nv);
-    unit(1, j) = Vec3(1.0, 0.0, 0.0);
-    psi.emplace_back(unit);
-  }
+  const std::vector<SplineDisplacement>& phi = cardinals->phi;
+  const std::vector<SplineDisplacement>& psi = cardinals->psi;
   // The normal equations, accumulated over blocks of kRefitBlock points (no n x m matrix: a
   // leaf may hold most of a large cloud; a block is one rank-k update).
   constexpr int kRefitBlock = 128;

@@ -3,14 +3,39 @@
 // meshless parameterization of its cloud (meshless_seed.hpp).
 #pragma once
 #include <cstddef>
+#include <map>
+#include <utility>
 #include <vector>
 
 #include "patch.hpp"
+#include "spline_displacement.hpp"
 
 namespace dbs {
 
 constexpr double kRefitRegularization = 1e-2;   ///< Tikhonov weight of the refit, times the mean diagonal of its normal matrix
 constexpr int kMaxRefitNodes = 441;             ///< leaves with more interior grid nodes (a grid above 23 x 23) are not refitted (the fit costs m^2 per point)
+
+/// The cardinal functions of the spline of nu x nv grids: the spline is a tensor product of
+/// linear 1D interpolations, so the displacement of a unit value at node (i,j) is
+/// phi_i(s) psi_j(t), both 1 at their own site and 0 at the others; phi_i is read along the
+/// grid line t = v(1) of a unit at (i,1), psi_j along s = u(1) of a unit at (1,j). They are
+/// the same for every leaf of one size, and interpolating them took half of a refit (the
+/// repair refits hundreds of leaves of a few sizes): a caller refitting many leaves adds
+/// their sizes first and then shares the basis read-only between threads.
+class GridFitBasis {
+ public:
+  struct Cardinals {
+    std::vector<SplineDisplacement> phi, psi;
+  };
+  /// Makes the cardinal functions of nu x nv grids unless made already or the fit refuses
+  /// such grids (nu or nv below 3, more than kMaxRefitNodes interior nodes).
+  void add(int nu, int nv);
+  /// Those of nu x nv grids, null when not added.
+  const Cardinals* find(int nu, int nv) const;
+
+ private:
+  std::map<std::pair<int, int>, Cardinals> made_;
+};
 
 /// Refits `leaf`'s grid so that its surface at each data point's (u,v) comes close to the
 /// point: least squares over `ids` (points whose (u,v) lie on the leaf), the interior nodes
@@ -19,6 +44,9 @@ constexpr int kMaxRefitNodes = 441;             ///< leaves with more interior g
 /// boundary's Coons patch plus a spline displacement linear in the grid's interior values,
 /// so the fit is one small dense solve; the boundary, hence every seam, is unchanged. False
 /// (the leaf untouched) when the grid is too large, no data reaches it or the solve fails.
-bool fit_grid_to_parameters(Patch& leaf, const std::vector<std::size_t>& ids, const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v);
+/// `basis` (may be null) holds the cardinal functions of the leaf's grid size, or they are
+/// made for this fit alone.
+bool fit_grid_to_parameters(Patch& leaf, const std::vector<std::size_t>& ids, const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v,
+                            const GridFitBasis* basis = nullptr);
 
 }  // namespace dbs
