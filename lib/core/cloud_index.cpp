@@ -79,7 +79,6 @@ nanoflann::SearchParams exact_search(bool sorted) { return nanoflann::SearchPara
 /// axes tried are the direction from the line to the box centre and u x (each coordinate axis).
 struct RayBoxBound {
   Vec3 p, u;
-  double bound;
   /// The axes u x (each coordinate axis), their absolute values and squared lengths: the same for
   /// every box of one query, computed once.
   std::array<Vec3, 3> cross, cross_abs;
@@ -93,7 +92,7 @@ struct RayBoxBound {
   double scale = 1.0;
   double scaled_bound, scaled_bound2;
 
-  RayBoxBound(const Vec3& point, const Vec3& unit, double b) : p(point), u(unit), bound(b) {
+  RayBoxBound(const Vec3& point, const Vec3& unit, double b) : p(point), u(unit) {
     cross = {{Vec3(0.0, -u.z(), u.y()), Vec3(u.z(), 0.0, -u.x()), Vec3(-u.y(), u.x(), 0.0)}};
     for (int a = 0; a < 3; ++a) {
       cross_abs[a] = cross[a].cwiseAbs();

@@ -1,7 +1,6 @@
 #include "grid_fit.hpp"
 
 #include <Eigen/Dense>
-#include <algorithm>
 
 #include "base_surface.hpp"
 #include "spline_displacement.hpp"
@@ -12,8 +11,8 @@ void GridFitBasis::add(int nu, int nv) {
   // A grid the fit refuses needs none (and a large one's would be large).
   if (nu < 3 || nv < 3 || (nu - 2) * (nv - 2) > kMaxRefitNodes || made_.count({nu, nv}) != 0) return;
   Cardinals c;
-  c.phi.reserve(static_cast<std::size_t>(std::max(nu - 2, 0)));
-  c.psi.reserve(static_cast<std::size_t>(std::max(nv - 2, 0)));
+  c.phi.reserve(static_cast<std::size_t>(nu - 2));
+  c.psi.reserve(static_cast<std::size_t>(nv - 2));
   for (int i = 1; i + 1 < nu; ++i) {
     Grid unit(nu, nv);
     unit(i, 1) = Vec3(1.0, 0.0, 0.0);

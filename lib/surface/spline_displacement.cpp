@@ -158,9 +158,9 @@ void SplineDisplacement::add_to_interior(Grid& grid) const {
   std::vector<SpanBasis> bu(static_cast<std::size_t>(grid.nu)), bv(static_cast<std::size_t>(grid.nv));
   for (int i = 0; i < grid.nu; ++i) bu[static_cast<std::size_t>(i)] = span_basis(grid.u(i), nu_, false);
   for (int j = 0; j < grid.nv; ++j) bv[static_cast<std::size_t>(j)] = span_basis(grid.v(j), nv_, false);
-  // Every control row blended along u once at each interior column: eval() blends the same
-  // four coefficients with the same weights (so the same bits), for every row of the grid
-  // that needs that control row instead of once.
+  // Each control row blended along u once at each interior column, then each grid row
+  // blending four of those along v: the coefficients and weights of eval(), in its order (so
+  // the same bits), without blending a control row again for every grid row that needs it.
   const std::size_t columns = static_cast<std::size_t>(grid.nu), control_rows = static_cast<std::size_t>(nv_ + 2);
   std::vector<Vec3> along_u(control_rows * columns);
   for (std::size_t r = 0; r < control_rows; ++r) {
