@@ -209,6 +209,17 @@ Local analyse(const std::vector<Vec3>& points, const std::vector<double>& u, con
   return out;
 }
 
+/// Whether the graph edge from i to j joins two points of one sheet: both surface-like, their
+/// normals within 60 degrees and the edge along both tangent planes (orient()'s edges).
+bool same_sheet(const std::vector<Vec3>& points, const std::vector<Local>& local, std::size_t i, std::size_t j) {
+  if (!local[i].surface_like || !local[j].surface_like) return false;
+  const Vec3& ni = local[i].normal;
+  const Vec3& nj = local[j].normal;
+  if (std::abs(ni.dot(nj)) < kMinEdgeCosine) return false;
+  const Vec3 d = (points[j] - points[i]).normalized();
+  return std::abs(ni.dot(d)) <= kMaxEdgeNormalCosine && std::abs(nj.dot(d)) <= kMaxEdgeNormalCosine;
+}
+
 /// Orientation of the normals: Prim's minimum spanning tree over the surface-like points of
 /// the graph, weight 1 - |n_i.n_j|, each component from its lowest index. A torn edge (its
 /// |(du,dv)| / |dp| above kTearRatio x the larger stretch of its ends) weighs kTornWeight more,
@@ -220,14 +231,7 @@ void orient(const std::vector<Vec3>& points, const std::vector<double>& u, const
             std::vector<std::uint32_t>& out_component, std::uint32_t& out_components) {
   const std::size_t n = local.size();
   // Kept edges of each point's nearest, both directions, then per point sorted and unique.
-  auto keep = [&](std::size_t i, std::uint32_t j) {
-    if (!local[j].surface_like) return false;
-    const Vec3& ni = local[i].normal;
-    const Vec3& nj = local[j].normal;
-    if (std::abs(ni.dot(nj)) < kMinEdgeCosine) return false;
-    const Vec3 d = (points[j] - points[i]).normalized();
-    return std::abs(ni.dot(d)) <= kMaxEdgeNormalCosine && std::abs(nj.dot(d)) <= kMaxEdgeNormalCosine;
-  };
+  auto keep = [&](std::size_t i, std::uint32_t j) { return same_sheet(points, local, i, j); };
   std::vector<std::uint8_t> kept(graph.size(), 0);
   std::vector<std::size_t> start(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
@@ -288,6 +292,37 @@ void orient(const std::vector<Vec3>& points, const std::vector<double>& u, const
       push_edges(to);
     }
   }
+}
+
+/// Distance of (u,v) to the border of the unit square.
+double to_border(double u, double v) { return std::min(std::min(u, 1.0 - u), std::min(v, 1.0 - v)); }
+
+/// Sound points (kFoldOk) seen torn away by at least kTornNeighbours sound points whose graph
+/// neighbours on their sheet they are (the tear judged at the seeing point, with its own
+/// stretch: a point thrown far off has a large stretch and tears nothing itself, the sound
+/// points around it are the ones that see it) become kFoldTorn: the points thrown off, not
+/// the sound ones around them, which hold the repair's fill in place.
+void mark_torn(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, const std::vector<Local>& local, const std::vector<std::uint32_t>& graph,
+               FoldMeasure& m) {
+  std::vector<std::uint8_t> seen(local.size(), 0);
+  for (std::size_t i = 0; i < local.size(); ++i) {
+    if (m.state[i] != kFoldOk || !(local[i].stretch > 0.0)) continue;
+    for (std::size_t t = 0; t < kGraphNeighbours; ++t) {
+      const std::uint32_t j = graph[i * kGraphNeighbours + t];
+      if (j == kNoNeighbour) break;
+      if (!same_sheet(points, local, i, j)) continue;
+      const double du = u[j] - u[i], dv = v[j] - v[i], duv = std::sqrt(du * du + dv * dv);
+      // Both nearer the domain's border than to each other: the sheet may be cut there (a
+      // cloud closing over a small rim meets itself across the boundary), a tear in order.
+      if (to_border(u[i], v[i]) < duv && to_border(u[j], v[j]) < duv) continue;
+      if (duv > kTearRatio * local[i].stretch * (points[j] - points[i]).norm() && seen[j] < 255) ++seen[j];
+    }
+  }
+  for (std::size_t j = 0; j < local.size(); ++j)
+    if (m.state[j] == kFoldOk && seen[j] >= kTornNeighbours) {
+      m.state[j] = kFoldTorn;
+      ++m.torn;
+    }
 }
 
 void check_sizes(std::size_t points, const std::vector<double>& u, const std::vector<double>& v, const char* what) {
@@ -517,6 +552,7 @@ FoldMeasure FoldNeighbourhoods::Impl::judge(const std::vector<double>& u, const 
       ++m.folded;
     }
   }
+  mark_torn(p, u, v, local, graph, m);
   const std::size_t decided = n - m.undecided;
   m.folded_share = decided == 0 ? 0.0 : static_cast<double>(m.folded) / static_cast<double>(decided);
   return m;

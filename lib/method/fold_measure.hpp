@@ -16,7 +16,9 @@
 // of the majority of its decided points is "right" (the normals of two components are oriented
 // independently, so no sign is comparable across them); points of the other sign are folded.
 // A globally mirrored (u,v) therefore folds nothing. The (u,v) only choose which neighbours
-// count; normals come from the cloud alone, no surface is consulted.
+// count; normals come from the cloud alone, no surface is consulted. A sound point that
+// several sound points of its own sheet (graph neighbours) see torn away is marked torn
+// (kFoldTorn), for the repair; it still counts as decided and unfolded.
 //
 // A point is undecided (never folded) when its neighbourhood is not surface-like, its
 // neighbours do not constrain J, J explains less than half of the (du,dv), the sign of J is
@@ -61,6 +63,7 @@ constexpr double kMaxCondition = 1e3;            ///< singular values of J
 constexpr double kSignificance = 3.0;            ///< smallest singular value in standard errors
 constexpr double kMinDetShare = 1e-3;            ///< |det J| relative to the median
 constexpr double kCoincident = 1e-12;            ///< (u,v) tolerance of count_coincident
+constexpr std::size_t kTornNeighbours = 3;       ///< a sound point's torn graph neighbours that make it kFoldTorn
 }  // namespace fold
 
 /// Per-point verdicts of measure_folds().
@@ -72,7 +75,15 @@ constexpr double kCoincident = 1e-12;            ///< (u,v) tolerance of count_c
 /// kFoldScrambled: undecided because no linear map explains the (u,v) of the neighbourhood
 /// (J explains less than half of them): its points are shuffled in (u,v), as where a
 /// surface pleated below the scale of its grid meets the cloud.
-enum : std::int8_t { kFoldOk = 1, kFoldUndecided = 0, kFolded = -1, kFoldCollapsed = -2, kFoldScrambled = -3 };
+/// kFoldTorn: decided and not folded (counted as such), but at least kTornNeighbours of its
+/// orientation-graph neighbours (its nearest points on the same sheet: normals within 60
+/// degrees, along both tangent planes) lie much farther from it in (u,v) than their distance
+/// suggests (|duv|/|dp| above kTearRatio x the point's own stretch). A continuous sheet torn
+/// apart in (u,v): where leaves meet under an overhang, points a leaf's surface passed at a
+/// distance take feet on another part of the domain, a scramble the measure's local maps do
+/// not see (they leave the torn neighbours out, as they must for a thin flap, whose two sides
+/// are never graph neighbours).
+enum : std::int8_t { kFoldOk = 1, kFoldUndecided = 0, kFolded = -1, kFoldCollapsed = -2, kFoldScrambled = -3, kFoldTorn = -4 };
 
 struct FoldMeasure {
   std::size_t points = 0;      ///< number of points judged
@@ -80,8 +91,9 @@ struct FoldMeasure {
   std::size_t undecided = 0;   ///< points whose orientation could not be decided (not counted as folded)
   std::size_t coincident = 0;  ///< points sharing one (u,v) with another point (see count_coincident)
   std::size_t collapsed = 0;   ///< undecided points whose neighbourhood is squeezed (kFoldCollapsed), part of `undecided`
+  std::size_t torn = 0;        ///< decided, unfolded points torn from their sheet's neighbours (kFoldTorn), not part of `undecided`
   double folded_share = 0.0;   ///< folded / (points - undecided); 0 when no point is decided
-  std::vector<std::int8_t> state;  ///< per point: kFoldOk (+1), kFolded (-1), kFoldUndecided (0), kFoldCollapsed (-2), kFoldScrambled (-3)
+  std::vector<std::int8_t> state;  ///< per point: kFoldOk (+1), kFolded (-1), kFoldUndecided (0), kFoldCollapsed (-2), kFoldScrambled (-3), kFoldTorn (-4)
   /// Per point: the unit normal towards which a surface agreeing with the (u,v) turns its
   /// Su x Sv there: the point's PCA normal, oriented with the others and signed by its
   /// component's majority (a surface S with S(u_i,v_i) near the points and the orientation

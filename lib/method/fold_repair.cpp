@@ -198,12 +198,15 @@ std::vector<char> widened(const CloudIndex& index, const std::vector<Vec3>& poin
 std::vector<char> suspect_points(const CloudIndex& index, const std::vector<Vec3>& points, const std::vector<std::size_t>& candidates, const std::vector<std::int8_t>& state,
                                  const std::vector<char>& far, int threads, RepairReach reach) {
   const std::size_t n = points.size();
+  // Torn points only in the wide reaches, which the driver keeps only where they leave fewer
+  // doubts at no higher mean distance.
+  auto sound = [&](std::size_t i) { return state[i] == kFoldOk || (state[i] == kFoldTorn && reach.wide_rings == 0); };
   std::vector<char> doubtful(n, 0), suspect(n, 0);
-  for (std::size_t i : candidates) doubtful[i] = far[i] || state[i] != kFoldOk;
+  for (std::size_t i : candidates) doubtful[i] = far[i] || !sound(i);
   parallel_for(candidates.size(), threads, [&](std::size_t c) {
     const std::size_t i = candidates[c];
-    if (far[i] || state[i] == kFoldOk) return;
-    if (state[i] == kFolded || state[i] == kFoldCollapsed) {
+    if (far[i] || sound(i)) return;
+    if (state[i] == kFolded || state[i] == kFoldCollapsed || state[i] == kFoldTorn) {
       suspect[i] = 1;
       return;
     }

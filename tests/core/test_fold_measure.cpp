@@ -2,6 +2,7 @@
 // strongly curved, noisy, creased, globally mirrored), a flipped patch is found, coincident
 // (u,v) are counted exactly, and the verdicts do not depend on scale or thread count.
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <random>
 
@@ -65,6 +66,7 @@ void no_folds_on_clean_height_field(void**) {
   assert_true(share(m.undecided, m.points) < 0.01);
   assert_int_equal(m.coincident, 0);
   assert_int_equal(m.collapsed, 0);
+  assert_int_equal(m.torn, 0);
 }
 
 void squeezed_band_is_collapsed_not_folded(void**) {
@@ -104,6 +106,7 @@ void no_folds_on_curved_surfaces(void**) {
     const FoldMeasure m = measure_folds(c.points, c.u, c.v, 0.0, 2);
     assert_int_equal(m.folded, 0);
     assert_true(share(m.undecided, m.points) < 0.02);
+    assert_int_equal(m.torn, 0);
   }
 }
 
@@ -145,6 +148,7 @@ void creased_box_folds_at_most_a_thousandth(void**) {
   const FoldMeasure m = measure_folds(c.points, c.u, c.v, 0.0, 2);
   assert_true(m.folded_share <= 1e-3);
   assert_true(share(m.undecided, m.points) < 0.02);
+  assert_int_equal(m.torn, 0);
 }
 
 void thin_flap_folds_nothing(void**) {
@@ -173,6 +177,55 @@ void thin_flap_folds_nothing(void**) {
   const FoldMeasure m = measure_folds(c.points, c.u, c.v, 0.0, 2);
   assert_true(m.folded_share <= 1e-3);
   assert_true(share(m.undecided, m.points) < 0.02);
+  // The two sides of the flap are far apart in (u,v) but never graph neighbours: no tear.
+  assert_int_equal(m.torn, 0);
+}
+
+void thrown_points_are_torn(void**) {
+  // The points of a small disk of the height field (radius 0.12 about the domain's centre)
+  // thrown 0.25 along u, as a leaf that passed them at a distance gives them feet elsewhere
+  // in the domain: among themselves their map is sound, and the measure's local maps leave
+  // the torn neighbours out, so the disk is neither folded nor undecided; its points are
+  // torn (the sound points around see them thrown off), and nothing away from it is.
+  Sample c = sample(height_field(), 4000, 25);
+  const double h = cloud_spacing(CloudIndex(c.points)), radius = 0.12;
+  std::vector<double> centre_distance;
+  for (std::size_t i = 0; i < c.u.size(); ++i) {
+    centre_distance.push_back(std::hypot(c.u[i] - 0.5, c.v[i] - 0.5));
+    if (centre_distance.back() < radius) c.u[i] += 0.25;
+  }
+  const FoldMeasure m = measure_folds(c.points, c.u, c.v, 0.0, 2);
+  // The tear runs along the disk's rim: points within 3 spacings h of it, on either side.
+  std::size_t disk = 0, rim = 0, rim_torn = 0, away_torn = 0;
+  for (std::size_t i = 0; i < c.points.size(); ++i) {
+    const double d = centre_distance[i];
+    disk += d < radius;
+    if (std::abs(d - radius) < 3.0 * h) {
+      ++rim;
+      rim_torn += m.state[i] == kFoldTorn;
+    } else {
+      away_torn += m.state[i] == kFoldTorn;
+    }
+  }
+  std::printf("spacing %.3g; thrown disk: %zu points, %zu within 3 spacings of its rim, %zu of them torn; %zu torn away from it\n", h, disk, rim, rim_torn, away_torn);
+  assert_true(disk > 20);
+  assert_true(rim_torn >= 0.35 * static_cast<double>(rim));  // 75 of 160
+  assert_int_equal(away_torn, 0);
+  assert_int_equal(m.torn, rim_torn);
+  assert_int_equal(m.folded, 0);
+  // The torn points count as decided and sound in the measure's figures.
+  assert_true(share(m.undecided, m.points) < 0.02);
+}
+
+void closed_sheet_is_not_torn_across_the_boundary(void**) {
+  // A whole cylinder cut along one generator: u = angle / 2 pi, v = height. Points on either
+  // side of the cut are neighbours in 3D and a whole domain apart in (u,v), both at the
+  // domain's border: a cut the boundary makes, not a tear.
+  const Surface cylinder = [](double a, double b) { return Vec3(0.3 * std::cos(2.0 * M_PI * a), 0.3 * std::sin(2.0 * M_PI * a), b); };
+  const Sample c = sample(cylinder, 4000, 26);
+  const FoldMeasure m = measure_folds(c.points, c.u, c.v, 0.0, 2);
+  assert_int_equal(m.torn, 0);
+  assert_int_equal(m.folded, 0);
 }
 
 /// The height field with u mirrored (u -> 1-u) inside the disk of radius 0.2 about the
@@ -454,6 +507,8 @@ int main() {
       cmocka_unit_test(noisy_height_field_folds_at_most_a_thousandth),
       cmocka_unit_test(creased_box_folds_at_most_a_thousandth),
       cmocka_unit_test(thin_flap_folds_nothing),
+      cmocka_unit_test(thrown_points_are_torn),
+      cmocka_unit_test(closed_sheet_is_not_torn_across_the_boundary),
       cmocka_unit_test(flipped_patch_is_flagged),
       cmocka_unit_test(squeezed_band_is_collapsed_not_folded),
       cmocka_unit_test(global_mirror_folds_nothing),

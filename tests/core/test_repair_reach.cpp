@@ -44,7 +44,7 @@ std::size_t reference_folds(const FoldShape& shape, const dbs::Result& r) {
 
 std::size_t doubted(const dbs::FoldMeasure& m) {
   std::size_t count = 0;
-  for (std::int8_t s : m.state) count += s == dbs::kFolded || s == dbs::kFoldCollapsed || s == dbs::kFoldScrambled;
+  for (std::int8_t s : m.state) count += s == dbs::kFolded || s == dbs::kFoldCollapsed || s == dbs::kFoldScrambled || s == dbs::kFoldTorn;
   return count;
 }
 
@@ -130,8 +130,10 @@ Trial trial(const char* name, double density, int max_level = dbs::Options().max
 void wide_reach_unfolds_a_feature_the_surfaces_missed(void**) {
   // The mushroom at scan density: the surfaces never reach under its cap. The narrow fill is
   // held by misplaced points around it; a wide one reaches sound ground and folds far less
-  // (180 narrow against 96 reference folds with 2 rings, 1106 without any repair), and the driver
-  // keeps the one the fold measure doubts least, then untangles it.
+  // (180 narrow against 50 reference folds with 2 rings, 1104 without any repair; 96 before
+  // the wide reaches took the points torn off their sheet at the stem's foot,
+  // fold_measure.hpp), and the driver keeps the one the fold measure doubts least, then
+  // untangles it.
   const Trial t = trial("mushroom", 2.5);
   const FoldShape& shape = t.shape;
   const std::vector<Vec3>& points = t.points;
@@ -144,7 +146,7 @@ void wide_reach_unfolds_a_feature_the_surfaces_missed(void**) {
   assert_true(same_parameters(chosen, one_thread));  // the choice does not depend on the threads
   assert_true(3 * c.folds[c.best] < 2 * c.folds[0]);
   assert_true(chosen.mean_distance <= plain.mean_distance);
-  // The untangling of the chosen repair: 96 -> 53 reference folds, no higher mean distance.
+  // The untangling of the chosen repair: 50 -> 27 reference folds, no higher mean distance.
   assert_false(same_parameters(t.expected, c.results[c.best]));
   assert_true(3 * reference_folds(shape, chosen) < 2 * c.folds[c.best]);
   assert_true(mean_distance(chosen) <= c.means[c.best]);
@@ -169,22 +171,25 @@ void wide_reach_unfolds_a_feature_the_surfaces_missed(void**) {
 void choice_on_a_tall_feature(void**) {
   // The tall dome at scan density: a wider fill crushes its walls (a harmonic map's (u,v)
   // shrink up a tube; with 3 rings, 2.5 times the narrow reach's reference folds), which the
-  // measure sees; the driver keeps the reach it doubts least, here the narrow one (222
-  // reference folds; 2 rings: 352, and 82 doubted points against 62), and untangles it.
+  // measure sees; the driver keeps the reach it doubts least, here the one of 1 ring (189
+  // reference folds and 56 doubted points; narrow: 226 and 67; 2 rings: 351 and 90), and
+  // untangles it. (The narrow one was kept, 62 doubted points against 63, before the points
+  // torn off their sheet at the dome's foot counted as doubted and were taken by the wide
+  // reaches.)
   const Trial t = trial("tall-dome", 2.5);
   const FoldShape& shape = t.shape;
   const std::vector<Vec3>& points = t.points;
   const dbs::Result& chosen = t.chosen;
   const Candidates& c = t.c;
   assert_true(same_parameters(chosen, t.expected));
-  assert_int_equal(c.best, 0);
+  assert_int_equal(c.best, 1);
   assert_true(c.doubts[dbs::kMaxWideRings] > c.doubts[0]);
   const dbs::Result crushed = repaired(t.plain, points, dbs::RepairReach{3});
   const std::size_t crushed_doubts = doubted(dbs::measure_folds(points, crushed.u, crushed.v, crushed.noise, 1));
   std::printf("tall dome x2.5: 3 wide rings: %zu reference folds, %zu doubted points\n", reference_folds(shape, crushed), crushed_doubts);
   assert_true(reference_folds(shape, crushed) > 2 * c.folds[0]);
   assert_true(crushed_doubts > c.doubts[c.best]);
-  // Its walls' thin triangles untangled: 222 -> 90 reference folds.
+  // Its walls' thin triangles untangled: 189 -> 90 reference folds.
   assert_true(2 * reference_folds(shape, chosen) < c.folds[c.best]);
   assert_true(mean_distance(chosen) <= c.means[c.best]);
 }
