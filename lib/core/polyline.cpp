@@ -98,6 +98,16 @@ Polyline::Polyline(std::vector<Vec3> points) : points_(std::move(points)) {
     while (vertex < cumulative_.size() && cumulative_[vertex] <= x) ++vertex;
     lookup_.bucket_first[b] = vertex;
   }
+  // Each segment's d/ds, as at(s, d_ds) returns it: the segment's own where it has a length,
+  // else (repeated points) that of the last segment before it with a direction (the first
+  // segment with one for repeated points at the start, which no s locates).
+  derivative_.resize(points_.size() - 1);
+  std::size_t directed = 0;
+  while (cumulative_[directed + 1] == cumulative_[directed]) ++directed;
+  for (std::size_t k = 0; k + 1 < points_.size(); ++k) {
+    if (cumulative_[k + 1] != cumulative_[k]) directed = k;
+    derivative_[k] = (points_[directed + 1] - points_[directed]) * (total / (cumulative_[directed + 1] - cumulative_[directed]));
+  }
 }
 
 Vec3 Polyline::at(double s) const {
@@ -115,11 +125,8 @@ Vec3 Polyline::at(double s, Vec3& d_ds) const {
   s = clamp_unit(s);
   const Location loc = locate(cumulative_, lookup_, s);
   // locate returns a segment of non-zero length, except for s = 1 when the polyline ends
-  // on repeated points: step back to the last segment with a direction then (one exists,
-  // the length being positive).
-  std::size_t k = loc.segment + 1;
-  while (cumulative_[k] == cumulative_[k - 1]) --k;
-  d_ds = (points_[k] - points_[k - 1]) * (length() / (cumulative_[k] - cumulative_[k - 1]));
+  // on repeated points, whose derivative is that of the last segment with a direction.
+  d_ds = derivative_[loc.segment];
   return point_at(points_, s, loc);
 }
 

@@ -47,6 +47,7 @@ class Polyline {
   std::vector<Vec3> points_;
   std::vector<double> cumulative_;  // arc length up to each vertex
   Lookup lookup_;
+  std::vector<Vec3> derivative_;  // per segment: the d/ds at(s, d_ds) gives on it
 };
 
 }  // namespace dbs
