@@ -60,14 +60,14 @@ Neighbours nearest_others(const CloudIndex& index, const std::vector<Vec3>& samp
   return out;
 }
 
-/// The share of the kSeedNeighbours sample points nearest a boundary position q on the
+/// The share of the kSeedBorderNeighbours sample points nearest a boundary position q on the
 /// minority side of the boundary there: the plane through q spanned by the boundary's
 /// tangent and the cloud's normal (PCA of those points) parts them; on the cloud's border
 /// they all lie on one side (0), where the boundary crosses the cloud about half on each.
 double share_beyond(const CloudIndex& index, const std::vector<Vec3>& sample, const Vec3& q, const Vec3& tangent) {
   std::vector<std::size_t> near;
   std::vector<double> d2;
-  index.knn(q, kSeedNeighbours, near, d2);
+  index.knn(q, kSeedBorderNeighbours, near, d2);
   if (near.size() < 3) return 0.0;
   Vec3 centre = Vec3::Zero();
   for (std::size_t j : near) centre += sample[j];

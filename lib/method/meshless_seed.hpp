@@ -26,6 +26,7 @@ constexpr std::size_t kSeedNeighbours = 12;  ///< k of the inverse-distance weig
 constexpr double kSeedBoundarySpacings = 3.0;  ///< a boundary position is on the cloud within this many spacings of the sample ...
 constexpr double kSeedBoundaryShare = 0.9;     ///< ... and the map is solved only when this share of them is
 constexpr double kSeedBeyondShare = 0.2;      ///< ... and the median share of the points near it beyond the boundary is at most this (0 on a border, 1/2 across a cloud)
+constexpr std::size_t kSeedBorderNeighbours = 48;  ///< "near it": its nearest sample points, their plane wide enough to stand above noise of half a spacing
 constexpr int kMaxSeedGrid = 23;               ///< the largest grid the fit takes (grid_fit.hpp: kMaxRefitNodes)
 
 /// Fits `patch`'s grid, resampled to grid x grid (3 <= grid <= kMaxSeedGrid), to the meshless

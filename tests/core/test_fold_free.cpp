@@ -263,7 +263,8 @@ void hard_shapes_stay_within_their_bounds(void**) {
     // The mushroom's and the dome's roots end 24 and 25 times above the target, but the median
     // distance of their points is 0.17 and 0.06 times it: only the feature stands off the
     // surface, and the root is not evolved again from other starts (evolve.hpp), which both
-    // did and then dropped. The other shapes' roots end within 10 times the target.
+    // did and then dropped; nor is the fingers' (6.9 and 0.04 times). The others end within
+    // the restart's 5 times the target (the open box 4.3).
     assert_int_equal(r.result.patches.at(0).restarts, 0);
     assert_true(r.folds.share <= b.max_share);
     assert_true(r.result.mean_distance <= b.max_mean);
@@ -316,6 +317,32 @@ void sphere_cap_against_the_meshless_reference(void**) {
       theirs += reference.folded;
     }
     assert_true(ours <= theirs);
+  }
+}
+
+void noisy_caps_are_wrapped(void**) {
+  // The closed caps as a scanner sees them, with noise along the normal (sigma 0.25% and
+  // 0.5% of the diagonal, the noise floor raising the target 2.6 and 4.8 times): the root
+  // must still wrap the cloud. Two ways it did not:
+  // - 330 degrees, sigma 0.5%, 8,281 points: the meshless seed's border test fitted its plane
+  //   to 12 points near the rim, which the noise tilts, and refused the seed (mean distance
+  //   0.153 against a target of 0.0165, 234 folded reference triangles; seeded: 0.0158, 14);
+  // - 300 degrees, sigma 0.25%, 10,201 points: the root ended 6.1 times above the raised
+  //   target, its median 1.4 times (0.0525 and 0.0121 against 0.0086), and was not restarted
+  //   at 10 times (0.0179 and 261 folds; restarted at 5 times: 0.0083 and 13).
+  const struct {
+    const char* name;
+    double density, noise;
+  } cases[] = {{"sphere-cap-330", 2.0, 0.005}, {"sphere-cap-300", 2.5, 0.0025}};
+  for (const auto& c : cases) {
+    const FoldShape shape = dbs_folds::fold_shape(c.name, c.density, c.noise);
+    const Run r = run(shape);
+    std::printf("%s x%.1f, sigma %.2f%% of the diagonal: mean distance %.3g (target %.3g), %zu folds (%.2f%%), %d restarts\n", c.name, c.density, 100.0 * c.noise,
+                r.result.mean_distance, r.result.accuracy, r.folds.folded, 100.0 * r.folds.share, r.result.patches.at(0).restarts);
+    assert_true(r.result.accuracy > 2.0 * r.result.requested_accuracy);
+    assert_true(r.result.patches.at(0).restarts >= 1);
+    assert_true(r.result.mean_distance <= 1.25 * r.result.accuracy);
+    assert_true(r.folds.share <= 0.0025);  // as the clean caps (the meshless method: 0.34% and 0.07% here)
   }
 }
 
@@ -473,6 +500,7 @@ int main(int argc, char** argv) {
       cmocka_unit_test(repair_on_the_hard_shapes),
       cmocka_unit_test(repair_at_scan_density),
       cmocka_unit_test(sphere_cap_against_the_meshless_reference),
+      cmocka_unit_test(noisy_caps_are_wrapped),
       cmocka_unit_test(hard_shape_is_scale_and_thread_invariant),
       cmocka_unit_test(many_leaves_are_the_same_for_every_thread_count),
       cmocka_unit_test(far_points_leave_the_turned_count_alone),

@@ -161,6 +161,9 @@ double smallest_angle(const Point3& p, const Point3& q, const Point3& r) {
 /// Points of the shapes built on this thread, as a multiple of their usual count (each side of
 /// the jittered grid scaled by its square root); set only by fold_shape(name, density).
 thread_local double shape_density = 1.0;
+/// Normal noise added to the shapes built on this thread, relative to the diagonal (the larger
+/// of it and the shape's own); set only by fold_shape(name, density, noise).
+thread_local double shape_noise = 0.0;
 
 FoldShape build(std::string name, std::string description, SurfaceFunction surface, std::size_t grid_a, std::size_t grid_b, double relative_noise,
                 std::uint64_t seed) {
@@ -194,7 +197,7 @@ FoldShape build(std::string name, std::string description, SurfaceFunction surfa
     }
   }
   shape.diagonal = norm(sub(hi, lo));
-  shape.noise_sigma = relative_noise * shape.diagonal;
+  shape.noise_sigma = std::max(relative_noise, shape_noise) * shape.diagonal;
   Random noise(seed ^ 0x6a09e667f3bcc909ULL);
   shape.xyz.resize(3 * n);
   for (std::size_t k = 0; k < n; ++k) {
@@ -371,6 +374,15 @@ FoldShape fold_shape(const std::string& name, double density) {
   } restore;
   shape_density = density;
   return fold_shape(name);
+}
+
+FoldShape fold_shape(const std::string& name, double density, double noise) {
+  if (!(noise >= 0.0) || noise > 0.05) throw std::invalid_argument("fold_shape: noise " + std::to_string(noise) + " is outside [0, 0.05]");
+  struct Restore {
+    ~Restore() { shape_noise = 0.0; }
+  } restore;
+  shape_noise = noise;
+  return fold_shape(name, density);
 }
 
 FoldShape fold_shape(const std::string& name) {

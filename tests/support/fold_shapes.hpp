@@ -90,6 +90,10 @@ FoldShape fold_shape(const std::string& name);
 /// The same with `density` times the points (each side of its jittered grid scaled by the
 /// square root; in (0, 1000]), for measuring how the method scales.
 FoldShape fold_shape(const std::string& name, double density);
+/// The same with Gaussian noise along the normal of at least `noise` (sigma relative to the
+/// diagonal, in [0, 0.05]; a noisy shape keeps its own where that is larger): the hard shapes
+/// as a scanner sees them. The name stays the shape's.
+FoldShape fold_shape(const std::string& name, double density, double noise);
 /// The names all_fold_shapes() uses, in its order.
 std::vector<std::string> fold_shape_names();
 
