@@ -176,7 +176,7 @@ bool save_shape(const FoldShape& shape, const std::string& dir) {
   const std::string cloud_path = dir + "/" + shape.name + ".xyz", boundary_path = dir + "/" + shape.name + "_boundary.txt";
   std::FILE* cloud = std::fopen(cloud_path.c_str(), "w");
   if (!cloud) return false;
-  std::fprintf(cloud, "# %s: %s\n# x y z, then the true parameters a b (ignored by dbs-param); point i + %zu j is node (i, j) of the jittered grid\n", shape.name.c_str(), shape.description.c_str(), shape.grid_a);
+  std::fprintf(cloud, "# %s: %s; noise along the normal, sigma %.6g\n# x y z, then the true parameters a b (ignored by dbs-param); point i + %zu j is node (i, j) of the jittered grid\n", shape.name.c_str(), shape.description.c_str(), shape.noise_sigma, shape.grid_a);
   for (std::size_t k = 0; k < shape.count(); ++k)
     std::fprintf(cloud, "%.17g %.17g %.17g %.17g %.17g\n", shape.xyz[3 * k], shape.xyz[3 * k + 1], shape.xyz[3 * k + 2], shape.uv_true[2 * k], shape.uv_true[2 * k + 1]);
   const bool cloud_ok = std::fclose(cloud) == 0;

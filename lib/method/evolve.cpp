@@ -33,11 +33,11 @@ constexpr std::array<std::size_t, 5> kStopRounds{{16, 8, 4, 2, 1}};
 constexpr int kMinWarmUpGrid = 3;
 
 /// evolve_patch_with_restart: a patch ending more than this times above the target is evolved
-/// again from the coarsest warm-up (10 before the noisy caps of dbs-bench-folds: the noise
-/// floor raises the target, and a 300-degree cap with noise of 0.25% of its diagonal ended 6.1
-/// times above it, its median 1.4 times, unwrapped; of the clean hard shapes' roots only the
-/// three that the median spares end higher: the fingers 6.9, the mushroom 24, the tall dome
-/// 25; the open box 4.3) ...
+/// again from the coarsest warm-up, and still that far above after it, from the meshless seed
+/// (10 before the noisy caps of dbs-bench-folds: the noise floor raises the target, and a
+/// 300-degree cap with noise of 0.25% of its diagonal ended 6.1 times above it, its median 1.4
+/// times, unwrapped; of the clean hard shapes' roots only the three that the median spares
+/// end higher: the fingers 6.9, the mushroom 24, the tall dome 25; the open box 4.3) ...
 constexpr double kCoarseRestartFactor = 5.0;
 /// ... which is kept where its error is below this times the first one's (the 300-degree cap:
 /// 0.03-0.18; where both wrap the cloud: 0.70-0.99).

@@ -299,9 +299,9 @@ double to_border(double u, double v) { return std::min(std::min(u, 1.0 - u), std
 
 /// Sound points (kFoldOk) seen torn away by at least kTornNeighbours sound points whose graph
 /// neighbours on their sheet they are (the tear judged at the seeing point, with its own
-/// stretch: a point thrown far off has a large stretch and tears nothing itself, the sound
-/// points around it are the ones that see it) become kFoldTorn: the points thrown off, not
-/// the sound ones around them, which hold the repair's fill in place.
+/// stretch) become kFoldTorn. Both sides of a tear are marked: a region thrown elsewhere in the
+/// domain is sound within itself, and its points and the sound points around it see each
+/// other torn away.
 void mark_torn(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, const std::vector<Local>& local, const std::vector<std::uint32_t>& graph,
                FoldMeasure& m) {
   std::vector<std::uint8_t> seen(local.size(), 0);

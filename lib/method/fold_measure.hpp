@@ -18,7 +18,8 @@
 // A globally mirrored (u,v) therefore folds nothing. The (u,v) only choose which neighbours
 // count; normals come from the cloud alone, no surface is consulted. A sound point that
 // several sound points of its own sheet (graph neighbours) see torn away is marked torn
-// (kFoldTorn), for the repair; it still counts as decided and unfolded.
+// (kFoldTorn), for the repair; it still counts as decided and unfolded. The (u,v) are taken to
+// lie in the unit square: near its border a tear may be the boundary's cut.
 //
 // A point is undecided (never folded) when its neighbourhood is not surface-like, its
 // neighbours do not constrain J, J explains less than half of the (du,dv), the sign of J is
@@ -63,7 +64,7 @@ constexpr double kMaxCondition = 1e3;            ///< singular values of J
 constexpr double kSignificance = 3.0;            ///< smallest singular value in standard errors
 constexpr double kMinDetShare = 1e-3;            ///< |det J| relative to the median
 constexpr double kCoincident = 1e-12;            ///< (u,v) tolerance of count_coincident
-constexpr std::size_t kTornNeighbours = 3;       ///< a sound point's torn graph neighbours that make it kFoldTorn
+constexpr std::size_t kTornNeighbours = 3;       ///< sound points that see a point thrown off make it kFoldTorn
 }  // namespace fold
 
 /// Per-point verdicts of measure_folds().
@@ -75,15 +76,23 @@ constexpr std::size_t kTornNeighbours = 3;       ///< a sound point's torn graph
 /// kFoldScrambled: undecided because no linear map explains the (u,v) of the neighbourhood
 /// (J explains less than half of them): its points are shuffled in (u,v), as where a
 /// surface pleated below the scale of its grid meets the cloud.
-/// kFoldTorn: decided and not folded (counted as such), but at least kTornNeighbours of its
-/// orientation-graph neighbours (its nearest points on the same sheet: normals within 60
-/// degrees, along both tangent planes) lie much farther from it in (u,v) than their distance
-/// suggests (|duv|/|dp| above kTearRatio x the point's own stretch). A continuous sheet torn
-/// apart in (u,v): where leaves meet under an overhang, points a leaf's surface passed at a
-/// distance take feet on another part of the domain, a scramble the measure's local maps do
-/// not see (they leave the torn neighbours out, as they must for a thin flap, whose two sides
-/// are never graph neighbours).
+/// kFoldTorn: decided and not folded (counted as such), but seen thrown off by at least
+/// kTornNeighbours sound points of its sheet: points that have it among their
+/// orientation-graph neighbours (their nearest points on the same sheet: normals within 60
+/// degrees, along both tangent planes) and find it much farther in (u,v) than its distance
+/// suggests (|duv|/|dp| above kTearRatio x their own stretch); a pair both nearer the unit
+/// square's border than to each other in (u,v) is a cut the boundary makes, not a tear. A
+/// continuous sheet torn apart in (u,v): where leaves meet under an overhang, points a leaf's
+/// surface passed at a distance take feet on another part of the domain, a scramble the
+/// measure's local maps do not see (they leave the torn neighbours out, as they must for a
+/// thin flap, whose two sides are never graph neighbours). The points on both sides of the
+/// tear see each other so (a disk of points thrown elsewhere in the domain: about as many
+/// torn points outside it as inside); a clump of a few points thrown off is undecided instead.
 enum : std::int8_t { kFoldOk = 1, kFoldUndecided = 0, kFolded = -1, kFoldCollapsed = -2, kFoldScrambled = -3, kFoldTorn = -4 };
+
+/// The verdicts the repair is for: folded, collapsed, scrambled or torn (plain undecided
+/// points are not, unless amid such points: fold_repair.hpp).
+inline bool doubted_verdict(std::int8_t state) { return state == kFolded || state == kFoldCollapsed || state == kFoldScrambled || state == kFoldTorn; }
 
 struct FoldMeasure {
   std::size_t points = 0;      ///< number of points judged
@@ -102,7 +111,8 @@ struct FoldMeasure {
   std::vector<Vec3> right_normal;
 };
 
-/// Judges the parameterization (u[i], v[i]) of points[i]. noise_sigma >= 0 is the cloud's noise
+/// Judges the parameterization (u[i], v[i]) of points[i], (u,v) in the unit square (kFoldTorn
+/// takes points near its border for a cut of the boundary). noise_sigma >= 0 is the cloud's noise
 /// level in cloud units (0: unknown or noise-free); threads as Options::threads (0 = all cores).
 /// Throws Error(InvalidArgument) when the sizes differ or noise_sigma < 0, Error(NonFinite) for
 /// a non-finite point, parameter or sigma. Fewer than 4 distinct points: all undecided.

@@ -307,7 +307,9 @@ std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>&
                                   RepairReach reach) {
   const std::size_t n = points.size();
   std::vector<char> none(n, 0);
-  if (std::find_if(state.begin(), state.end(), [](std::int8_t s) { return s != kFoldOk; }) == state.end()) return none;
+  // Torn points count in the wide reaches only (suspect_points).
+  const auto sound = [&](std::int8_t s) { return s == kFoldOk || (s == kFoldTorn && reach.wide_rings == 0); };
+  if (std::all_of(state.begin(), state.end(), sound)) return none;
   const std::vector<char> far = far_from_surface(result);
   if (judged.empty()) {
     if (state.size() != n) fail(ErrorCode::InvalidArgument, "doubtful_points: " + std::to_string(state.size()) + " verdicts for " + std::to_string(n) + " points");

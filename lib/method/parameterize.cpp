@@ -556,7 +556,7 @@ class Driver {
 
   /// Points the fold measure judged folded, collapsed, scrambled or torn: what the repair is for.
   static std::size_t doubted_points(const FoldMeasure& folds) {
-    return static_cast<std::size_t>(std::count_if(folds.state.begin(), folds.state.end(), [](std::int8_t s) { return s == kFolded || s == kFoldCollapsed || s == kFoldScrambled || s == kFoldTorn; }));
+    return static_cast<std::size_t>(std::count_if(folds.state.begin(), folds.state.end(), doubted_verdict));
   }
 
   /// The last-resort repair (fold_repair.hpp) of the far points and those flagged in

@@ -322,14 +322,14 @@ void sphere_cap_against_the_meshless_reference(void**) {
 
 void noisy_caps_are_wrapped(void**) {
   // The closed caps as a scanner sees them, with noise along the normal (sigma 0.25% and
-  // 0.5% of the diagonal, the noise floor raising the target 2.6 and 4.8 times): the root
+  // 0.5% of the diagonal, the noise floor raising the target 2.5 and 4.7 times): the root
   // must still wrap the cloud. Two ways it did not:
   // - 330 degrees, sigma 0.5%, 8,281 points: the meshless seed's border test fitted its plane
   //   to 12 points near the rim, which the noise tilts, and refused the seed (mean distance
   //   0.153 against a target of 0.0165, 234 folded reference triangles; seeded: 0.0158, 14);
   // - 300 degrees, sigma 0.25%, 10,201 points: the root ended 6.1 times above the raised
   //   target, its median 1.4 times (0.0525 and 0.0121 against 0.0086), and was not restarted
-  //   at 10 times (0.0179 and 261 folds; restarted at 5 times: 0.0083 and 13).
+  //   at 10 times (0.0179 and 250 folds; restarted at 5 times: 0.0083 and 13).
   const struct {
     const char* name;
     double density, noise;

@@ -2,8 +2,8 @@
 // strongly curved, noisy, creased, globally mirrored), a flipped patch is found, coincident
 // (u,v) are counted exactly, and the verdicts do not depend on scale or thread count.
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "analytic_clouds.hpp"
@@ -185,8 +185,9 @@ void thrown_points_are_torn(void**) {
   // The points of a small disk of the height field (radius 0.12 about the domain's centre)
   // thrown 0.25 along u, as a leaf that passed them at a distance gives them feet elsewhere
   // in the domain: among themselves their map is sound, and the measure's local maps leave
-  // the torn neighbours out, so the disk is neither folded nor undecided; its points are
-  // torn (the sound points around see them thrown off), and nothing away from it is.
+  // the torn neighbours out, so the disk is neither folded nor undecided. The points on both
+  // sides of its rim see each other thrown off: they are torn (34 inside the disk, 41 outside
+  // it), and nothing away from the rim is.
   Sample c = sample(height_field(), 4000, 25);
   const double h = cloud_spacing(CloudIndex(c.points)), radius = 0.12;
   std::vector<double> centre_distance;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -382,7 +383,13 @@ FoldShape fold_shape(const std::string& name, double density, double noise) {
     ~Restore() { shape_noise = 0.0; }
   } restore;
   shape_noise = noise;
-  return fold_shape(name, density);
+  FoldShape shape = fold_shape(name, density);
+  if (shape.noise_sigma > 0.0 && shape.name.find("-noisy") == std::string::npos) {
+    std::ostringstream suffix;
+    suffix << "-noise" << noise;
+    shape.name += suffix.str();
+  }
+  return shape;
 }
 
 FoldShape fold_shape(const std::string& name) {
