@@ -84,8 +84,8 @@ struct Repair {
 /// under an overhang) and the far points widened as a wide RepairReach says. Torn points are
 /// left to the wide reaches, which the driver keeps only where they leave fewer doubts at no
 /// more than the unrepaired mean distance (the narrow one it keeps unchecked): the 10,201-point
-/// mushroom of dbs-bench-folds folds 53 -> 27 reference triangles. So torn points alone start
-/// no repair: the driver tries the wide reaches only after a narrow one that moved points. On a sampled
+/// mushroom of dbs-bench-folds folds 53 -> 27 reference triangles. Where the torn points are
+/// all there is to repair, the driver skips the narrow repair and tries the wide ones. On a sampled
 /// cloud they are found among the judged points and every point takes the flag of its
 /// nearest judged point (a query per point only when there is a suspect). Points far outside
 /// the body are never taken. Deterministic for any thread count.

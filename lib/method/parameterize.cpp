@@ -148,18 +148,22 @@ class Driver {
     result_.stage_seconds.folds = seconds_since(folds_start);
     result_.repaired.assign(points_.size(), 0);
     if (options_.repair) {
-      // The narrow repair first; where it moved points and leaves points the measure doubts,
-      // the wide ones from the same start, each kept only when the measure doubts fewer points
-      // after it than after the best so far and the mean distance stays at most the
-      // unrepaired one (the repair is on by default because it raises neither folds nor fit;
-      // fold_repair.hpp). Nothing is saved when there is nothing to repair.
+      // The narrow repair first; where it moved points and leaves points the measure doubts
+      // (or where torn points were all there was), the wide ones from the same start, each
+      // kept only when the measure doubts fewer points after it than after the best so far and
+      // the mean distance stays at most the unrepaired one (the repair is on by default
+      // because it raises neither folds nor fit; fold_repair.hpp). Nothing is saved when there
+      // is nothing to repair.
       auto repair_start = Clock::now();
       const std::vector<char> narrow = doubtful_points(result_, points_, judged, folds.state, threads_, &meter_);
-      if (repair_has_work(result_, narrow)) {
+      // Torn points are for the wide reaches only: where they are all there is to repair, the
+      // narrow repair is skipped and the wide ones start from the unrepaired result.
+      const bool narrow_work = repair_has_work(result_, narrow);
+      if (narrow_work || folds.torn > 0) {
         const RepairSnapshot unrepaired(result_);
         const double unrepaired_mean = mean_counted_distance();
         const FoldMeasure initial = folds;
-        const bool moved = repair(narrow);
+        bool moved = narrow_work && repair(narrow);
         result_.stage_seconds.parameterize += seconds_since(repair_start);
         if (moved) {
           folds_start = Clock::now();
@@ -167,7 +171,7 @@ class Driver {
           result_.stage_seconds.folds += seconds_since(folds_start);
         }
         std::size_t best_doubts = doubted_points(folds);
-        for (int rings = 1; moved && rings <= kMaxWideRings && best_doubts > 0; ++rings) {
+        for (int rings = 1; (moved || !narrow_work) && rings <= kMaxWideRings && best_doubts > 0; ++rings) {
           repair_start = Clock::now();
           const RepairSnapshot best(result_);
           unrepaired.restore(result_);
@@ -184,6 +188,7 @@ class Driver {
           if (doubts < best_doubts && mean_counted_distance() <= unrepaired_mean) {
             folds = std::move(wide);
             best_doubts = doubts;
+            moved = true;
           } else {
             best.restore(result_);
           }
