@@ -384,7 +384,7 @@ FoldShape fold_shape(const std::string& name, double density, double noise) {
   } restore;
   shape_noise = noise;
   FoldShape shape = fold_shape(name, density);
-  if (shape.noise_sigma > 0.0 && shape.name.find("-noisy") == std::string::npos) {
+  if (noise > 0.0 && shape.noise_sigma == noise * shape.diagonal) {  // the noise asked for, not the shape's own
     std::ostringstream suffix;
     suffix << "-noise" << noise;
     shape.name += suffix.str();

@@ -92,7 +92,8 @@ FoldShape fold_shape(const std::string& name);
 FoldShape fold_shape(const std::string& name, double density);
 /// The same with Gaussian noise along the normal of at least `noise` (sigma relative to the
 /// diagonal, in [0, 0.05]; a noisy shape keeps its own where that is larger): the hard shapes
-/// as a scanner sees them. A shape made noisy so is named with the noise ("mushroom-noise0.005").
+/// as a scanner sees them. Where that noise is the shape's, its name says so ("mushroom-noise0.005",
+/// "saddle-noisy-noise0.01").
 FoldShape fold_shape(const std::string& name, double density, double noise);
 /// The names all_fold_shapes() uses, in its order.
 std::vector<std::string> fold_shape_names();
