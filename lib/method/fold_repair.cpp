@@ -192,15 +192,18 @@ std::vector<char> widened(const CloudIndex& index, const std::vector<Vec3>& poin
   return taken;
 }
 
+/// Whether a verdict leaves a point alone in `reach`: sound, or torn in the narrow reach (torn
+/// points go to the wide reaches only, which the driver keeps only where they leave fewer
+/// doubts at no higher mean distance).
+bool sound_in(std::int8_t state, RepairReach reach) { return state == kFoldOk || (state == kFoldTorn && reach.wide_rings == 0); }
+
 /// The suspect points among `candidates` (see doubtful_points), `state` and `far` indexed
 /// like `points` (entries of other points unused), the ring of their kRepairNeighbours
 /// nearest points in `index` included: 1 for a point to repair.
 std::vector<char> suspect_points(const CloudIndex& index, const std::vector<Vec3>& points, const std::vector<std::size_t>& candidates, const std::vector<std::int8_t>& state,
                                  const std::vector<char>& far, int threads, RepairReach reach) {
   const std::size_t n = points.size();
-  // Torn points only in the wide reaches, which the driver keeps only where they leave fewer
-  // doubts at no higher mean distance.
-  auto sound = [&](std::size_t i) { return state[i] == kFoldOk || (state[i] == kFoldTorn && reach.wide_rings == 0); };
+  auto sound = [&](std::size_t i) { return sound_in(state[i], reach); };
   std::vector<char> doubtful(n, 0), suspect(n, 0);
   for (std::size_t i : candidates) doubtful[i] = far[i] || !sound(i);
   parallel_for(candidates.size(), threads, [&](std::size_t c) {
@@ -307,9 +310,7 @@ std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>&
                                   RepairReach reach) {
   const std::size_t n = points.size();
   std::vector<char> none(n, 0);
-  // Torn points count in the wide reaches only (suspect_points).
-  const auto sound = [&](std::int8_t s) { return s == kFoldOk || (s == kFoldTorn && reach.wide_rings == 0); };
-  if (std::all_of(state.begin(), state.end(), sound)) return none;
+  if (std::all_of(state.begin(), state.end(), [&](std::int8_t s) { return sound_in(s, reach); })) return none;
   const std::vector<char> far = far_from_surface(result);
   if (judged.empty()) {
     if (state.size() != n) fail(ErrorCode::InvalidArgument, "doubtful_points: " + std::to_string(state.size()) + " verdicts for " + std::to_string(n) + " points");
