@@ -15,27 +15,21 @@
 
 #include "cloud_index.hpp"
 #include "error.hpp"
+#include "fold_local.hpp"
 #include "parallel.hpp"
+#include "torn_points.hpp"
 
 namespace dbs {
 
 using namespace fold;
+using fold_detail::kNoNeighbour;
+using fold_detail::Local;
+using fold_detail::same_sheet;
 
 namespace {
 
-constexpr std::uint32_t kNoNeighbour = std::numeric_limits<std::uint32_t>::max();
 constexpr double kTornWeight = 2.0;  // above any untorn edge's 1 - |n_i.n_j| <= 1 - kMinEdgeCosine
 
-/// What the local analysis of one point found.
-struct Local {
-  Vec3 normal = Vec3::Zero();  // PCA normal (unoriented); e1 x e2 = normal for the sign below
-  bool surface_like = false;   // takes part in the orientation graph
-  std::int8_t sign = 0;        // sign(det J) against `normal`; 0 = undecided
-  bool collapsed = false;      // undecided because its neighbourhood is squeezed in (u,v)
-  bool scrambled = false;      // undecided because no linear map explains its neighbours' (u,v)
-  double abs_det = 0.0;        // |det J| when sign != 0
-  double stretch = 0.0;        // median |(du,dv)| / |dp| over the neighbours; 0 = unknown
-};
 
 /// Eigenvalues (ascending) of the symmetric 2x2 [a b; b c].
 std::pair<double, double> eigen2(double a, double b, double c) {
@@ -209,17 +203,6 @@ Local analyse(const std::vector<Vec3>& points, const std::vector<double>& u, con
   return out;
 }
 
-/// Whether the graph edge from i to j joins two points of one sheet: both surface-like, their
-/// normals within 60 degrees and the edge along both tangent planes (orient()'s edges).
-bool same_sheet(const std::vector<Vec3>& points, const std::vector<Local>& local, std::size_t i, std::size_t j) {
-  if (!local[i].surface_like || !local[j].surface_like) return false;
-  const Vec3& ni = local[i].normal;
-  const Vec3& nj = local[j].normal;
-  if (std::abs(ni.dot(nj)) < kMinEdgeCosine) return false;
-  const Vec3 d = (points[j] - points[i]).normalized();
-  return std::abs(ni.dot(d)) <= kMaxEdgeNormalCosine && std::abs(nj.dot(d)) <= kMaxEdgeNormalCosine;
-}
-
 /// Orientation of the normals: Prim's minimum spanning tree over the surface-like points of
 /// the graph, weight 1 - |n_i.n_j|, each component from its lowest index. A torn edge (its
 /// |(du,dv)| / |dp| above kTearRatio x the larger stretch of its ends) weighs kTornWeight more,
@@ -292,37 +275,6 @@ void orient(const std::vector<Vec3>& points, const std::vector<double>& u, const
       push_edges(to);
     }
   }
-}
-
-/// Distance of (u,v) to the border of the unit square.
-double to_border(double u, double v) { return std::min(std::min(u, 1.0 - u), std::min(v, 1.0 - v)); }
-
-/// Sound points (kFoldOk) seen torn away by at least kTornNeighbours sound points whose graph
-/// neighbours on their sheet they are (the tear judged at the seeing point, with its own
-/// stretch) become kFoldTorn. Both sides of a tear are marked: a region thrown elsewhere in the
-/// domain is sound within itself, and its points and the sound points around it see each
-/// other torn away.
-void mark_torn(const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v, const std::vector<Local>& local, const std::vector<std::uint32_t>& graph,
-               FoldMeasure& m) {
-  std::vector<std::uint8_t> seen(local.size(), 0);
-  for (std::size_t i = 0; i < local.size(); ++i) {
-    if (m.state[i] != kFoldOk || !(local[i].stretch > 0.0)) continue;
-    for (std::size_t t = 0; t < kGraphNeighbours; ++t) {
-      const std::uint32_t j = graph[i * kGraphNeighbours + t];
-      if (j == kNoNeighbour) break;
-      if (!same_sheet(points, local, i, j)) continue;
-      const double du = u[j] - u[i], dv = v[j] - v[i], duv = std::sqrt(du * du + dv * dv);
-      // Both nearer the domain's border than to each other: the sheet may be cut there (a
-      // cloud closing over a small rim meets itself across the boundary), a tear in order.
-      if (to_border(u[i], v[i]) < duv && to_border(u[j], v[j]) < duv) continue;
-      if (duv > kTearRatio * local[i].stretch * (points[j] - points[i]).norm() && seen[j] < 255) ++seen[j];
-    }
-  }
-  for (std::size_t j = 0; j < local.size(); ++j)
-    if (m.state[j] == kFoldOk && seen[j] >= kTornNeighbours) {
-      m.state[j] = kFoldTorn;
-      ++m.torn;
-    }
 }
 
 void check_sizes(std::size_t points, const std::vector<double>& u, const std::vector<double>& v, const char* what) {
@@ -552,7 +504,7 @@ FoldMeasure FoldNeighbourhoods::Impl::judge(const std::vector<double>& u, const 
       ++m.folded;
     }
   }
-  mark_torn(p, u, v, local, graph, m);
+  fold_detail::mark_torn(p, u, v, local, graph, m);
   const std::size_t decided = n - m.undecided;
   m.folded_share = decided == 0 ? 0.0 : static_cast<double>(m.folded) / static_cast<double>(decided);
   return m;
