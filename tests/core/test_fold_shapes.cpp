@@ -3,12 +3,14 @@
 // boundary sides equal to S on the square's sides with bitwise shared corners, noise of the
 // stated sigma along the normal, the overhang of the mushroom), the fold count sees 0 folds
 // under the true parameters and every triangle under a mirrored map, collapses count as
-// folds, the distance to the surface is right, and the meshless reference does not fold the
-// noise-free saddle.
+// folds, the distance to the surface is right, noise can be added to any shape, and the
+// meshless reference does not fold the noise-free saddle.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fold_shapes.hpp"
@@ -156,6 +158,44 @@ void noise_has_its_sigma_along_the_normal(void**) {
   assert_true(ripples.noise_sigma > 0.0 && ripples.noise_sigma < kRippleAmplitude / 3.0);
 }
 
+void noise_added_to_any_shape(void**) {
+  // fold_shape(name, density, noise): the same points, parameters and triangles as the clean
+  // shape, moved along the normal with the sigma asked for (named with it); a shape noisier of
+  // its own keeps its noise and name; the noise must lie in [0, 0.05].
+  const FoldShape clean = fold_shape("mushroom", 1.5), noisy = fold_shape("mushroom", 1.5, 0.004);
+  assert_string_equal(noisy.name.c_str(), "mushroom-noise0.004");
+  assert_true(noisy.uv_true == clean.uv_true && noisy.triangles == clean.triangles && noisy.diagonal == clean.diagonal);
+  assert_true(std::abs(noisy.noise_sigma - 0.004 * noisy.diagonal) <= 1e-15);
+  const double expected = noisy.noise_sigma * std::sqrt(2.0 / M_PI);
+  assert_true(std::abs(mean_distance_to_surface(noisy, noisy.xyz) / expected - 1.0) < 0.05);
+  const FoldShape own = fold_shape("saddle-noisy", 1.0, 0.001);
+  assert_string_equal(own.name.c_str(), "saddle-noisy");
+  assert_true(std::abs(own.noise_sigma - kSaddleNoise * own.diagonal) <= 1e-15);
+  assert_string_equal(fold_shape("saddle-noisy", 1.0, 0.01).name.c_str(), "saddle-noisy-noise0.01");
+  assert_true(fold_shape("cone", 1.0, 0.0).xyz == fold_shape("cone").xyz);
+  for (double bad : {-0.001, 0.051, std::nan("")}) {
+    bool refused = false;
+    try {
+      fold_shape("cone", 1.0, bad);
+    } catch (const std::invalid_argument&) {
+      refused = true;
+    }
+    assert_true(refused);
+  }
+  // A call refused after the noise was set (an unknown shape, a density out of range) leaves
+  // no noise behind for the next shape built on this thread.
+  for (const auto& [name, density] : {std::pair<const char*, double>{"no-such-shape", 1.0}, {"cone", 2000.0}}) {
+    bool refused = false;
+    try {
+      fold_shape(name, density, 0.004);
+    } catch (const std::invalid_argument&) {
+      refused = true;
+    }
+    assert_true(refused);
+    assert_true(fold_shape("cone").noise_sigma == 0.0);
+  }
+}
+
 void distance_to_surface_is_exact_off_the_surface(void**) {
   // Points moved 0.01 along the normal of the mushroom's cap, rim and stem are 0.01 away
   // (their nearest surface point is where they came from: the surface's radii of curvature
@@ -229,6 +269,7 @@ int main() {
       cmocka_unit_test(reference_triangles_fold_only_when_mirrored),
       cmocka_unit_test(collapsed_triangles_count_as_folds),
       cmocka_unit_test(noise_has_its_sigma_along_the_normal),
+      cmocka_unit_test(noise_added_to_any_shape),
       cmocka_unit_test(distance_to_surface_is_exact_off_the_surface),
       cmocka_unit_test(hard_shapes_are_hard),
       cmocka_unit_test(meshless_reference_does_not_fold_the_saddle),
