@@ -181,9 +181,7 @@ Settings parse_arguments(int argc, char** argv) {
         if (value == names[k]) settings.loss = k;
       if (settings.loss < 0) usage_error("--loss: '" + value + "' is not none, huber, cauchy or soft_l1");
     } else if (arg == "--relative-accuracy") {
-      char* end = nullptr;
-      settings.relative_accuracy = std::strtod(value.c_str(), &end);
-      if (end == value.c_str() || *end != '\0' || !(settings.relative_accuracy > 0.0)) usage_error(arg + ": '" + value + "' is not a positive number");
+      settings.relative_accuracy = bench::parse_number(arg, value, [](double x) { return x > 0.0; }, "a positive number", usage_error);
     } else {
       usage_error("unknown option '" + arg + "'");
     }

@@ -88,13 +88,9 @@ Settings parse_arguments(int argc, char** argv) {
     } else if (arg == "--repair") {
       settings.repair = parse_int(arg, value);
     } else if (arg == "--density") {
-      char* end = nullptr;
-      settings.density = std::strtod(value.c_str(), &end);
-      if (end == value.c_str() || *end != '\0' || !(settings.density > 0.0 && settings.density <= 1000.0)) usage_error("--density: '" + value + "' is not a number in (0, 1000]");
+      settings.density = bench::parse_number(arg, value, [](double x) { return x > 0.0 && x <= 1000.0; }, "a number in (0, 1000]", usage_error);
     } else if (arg == "--noise") {
-      char* end = nullptr;
-      settings.noise = std::strtod(value.c_str(), &end);
-      if (end == value.c_str() || *end != '\0' || !(settings.noise >= 0.0 && settings.noise <= 0.05)) usage_error("--noise: '" + value + "' is not a number in [0, 0.05]");
+      settings.noise = bench::parse_number(arg, value, [](double x) { return x >= 0.0 && x <= 0.05; }, "a number in [0, 0.05]", usage_error);
     } else if (arg == "--save") {
       settings.save_dir = value;
     } else if (arg == "--solver") {
