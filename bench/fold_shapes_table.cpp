@@ -125,6 +125,7 @@ struct Run {
   std::string reference_free = "n/a";  // the library's own fold measure, points (share)
   std::string turned = "n/a";          // points on a sheet turned against the truth (share)
   std::string reference_free_turned = "n/a";  // the library's own count (DBS_STAT_TURNED_*)
+  std::string stages = "n/a";                  // "index / evolve / subdivide / project / folds" seconds
 };
 
 /// "count (share%)", share in [0,1].
@@ -237,6 +238,12 @@ Run run_dbs(const FoldShape& shape, const dbs_options* options) {
 #ifdef DBS_STAT_FOLDED_SHARE
     run.reference_free = count_and_share(result, DBS_STAT_FOLDED_POINTS, DBS_STAT_FOLDED_SHARE);
 #endif
+#ifdef DBS_STAT_SECONDS_FOLDS
+    char stages[96];
+    std::snprintf(stages, sizeof stages, "%.2f / %.2f / %.2f / %.2f / %.2f", stat(result, DBS_STAT_SECONDS_INDEX), stat(result, DBS_STAT_SECONDS_EVOLVE), stat(result, DBS_STAT_SECONDS_SUBDIVIDE),
+                  stat(result, DBS_STAT_SECONDS_PARAMETERIZE), stat(result, DBS_STAT_SECONDS_FOLDS));
+    run.stages = stages;
+#endif
 #ifdef DBS_STAT_TURNED_POINTS
     run.reference_free_turned = count_and_share(result, DBS_STAT_TURNED_POINTS, DBS_STAT_TURNED_SHARE);
 #endif
@@ -280,9 +287,10 @@ int main(int argc, char** argv) {
               threads == 0 ? "all" : std::to_string(threads).c_str(), repair ? "on" : "off", solver == DBS_SOLVER_CERES ? "ceres" : "linear", settings.noise);
   std::printf("folds: reference triangles whose signed (u,v) area is negative or below 1e-3 of the median, as inverted+collapsed;\n"
               "to truth: mean distance of the result surface at each point's (u,v) to the noise-free surface;\n"
-              "turned: points on the result surface where its normal Su x Sv points against the noise-free surface's; ref.-free turned: the library's count\n\n");
-  std::printf("| shape | points | triangles | levels | patches | folds | folds %% | ref.-free folds | mean distance | target | to truth | time (s) | meshless folds | meshless %% | meshless time (s) | turned | ref.-free turned |\n");
-  std::printf("|-------|-------:|----------:|-------:|--------:|------:|--------:|----------------:|--------------:|-------:|---------:|---------:|---------------:|-----------:|------------------:|-------:|-----------------:|\n");
+              "turned: points on the result surface where its normal Su x Sv points against the noise-free surface's; ref.-free turned: the library's count;\n"
+              "stages: the seconds of time (s) by stage, index / evolve / subdivide / project (with the repair) / folds (the fold measure)\n\n");
+  std::printf("| shape | points | triangles | levels | patches | folds | folds %% | ref.-free folds | mean distance | target | to truth | time (s) | meshless folds | meshless %% | meshless time (s) | turned | ref.-free turned | stages (s) |\n");
+  std::printf("|-------|-------:|----------:|-------:|--------:|------:|--------:|----------------:|--------------:|-------:|---------:|---------:|---------------:|-----------:|------------------:|-------:|-----------------:|-----------:|\n");
   std::fflush(stdout);
   int failures = 0;
   for (const std::string& name : settings.shapes) {
@@ -305,12 +313,12 @@ int main(int argc, char** argv) {
       meshless_folds = std::string("error: ") + e.what();
     }
     if (run.ok) {
-      std::printf("| %s | %zu | %zu | %.0f | %.0f | %s | %s | %s | %.3g | %.3g | %.3g | %.2f | %s | %s | %s | %s | %s |\n", shape.name.c_str(), shape.count(), shape.triangle_count(),
+      std::printf("| %s | %zu | %zu | %.0f | %.0f | %s | %s | %s | %.3g | %.3g | %.3g | %.2f | %s | %s | %s | %s | %s | %s |\n", shape.name.c_str(), shape.count(), shape.triangle_count(),
                   run.levels, run.patches, folds(run.folds).c_str(), percent(run.folds).c_str(), run.reference_free.c_str(), run.mean_distance, run.accuracy, run.to_truth, run.seconds,
-                  meshless_folds.c_str(), meshless_share.c_str(), meshless_time.c_str(), run.turned.c_str(), run.reference_free_turned.c_str());
+                  meshless_folds.c_str(), meshless_share.c_str(), meshless_time.c_str(), run.turned.c_str(), run.reference_free_turned.c_str(), run.stages.c_str());
     } else {
       ++failures;
-      std::printf("| %s | %zu | %zu | error: %s | | | | | | | | %.2f | %s | %s | %s | | |\n", shape.name.c_str(), shape.count(), shape.triangle_count(), run.error.c_str(),
+      std::printf("| %s | %zu | %zu | error: %s | | | | | | | | %.2f | %s | %s | %s | | | |\n", shape.name.c_str(), shape.count(), shape.triangle_count(), run.error.c_str(),
                   run.seconds, meshless_folds.c_str(), meshless_share.c_str(), meshless_time.c_str());
     }
     std::fflush(stdout);
