@@ -92,6 +92,10 @@ struct Repair {
 std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>& points, const std::vector<std::size_t>& judged, const std::vector<std::int8_t>& state, int threads, WorkMeter* meter = nullptr,
                                   RepairReach reach = {});
 
+/// Points that neither move nor take part in a refit: those left out of the result (far outside
+/// the body, cropped) and far points that stand alone, gross outliers (see the header).
+std::vector<char> refit_outliers(const Result& result, const std::vector<Vec3>& points, int threads);
+
 /// Whether repair_folds would take any point: one flagged in `suspect` or a far one (the
 /// driver saves the result for a second try only then).
 bool repair_has_work(const Result& result, const std::vector<char>& suspect);

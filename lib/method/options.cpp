@@ -42,6 +42,7 @@ const OptionSpec kSpecs[] = {
     {{"outline_neighbours", true, 6.0, 256.0}, false},
     {{"crop", true, 0.0, 1.0}, false},
     {{"strict", true, 0.0, 1.0}, false},
+    {{"smooth_turned", true, 0.0, 1.0}, false},
 };
 constexpr int kOptionCount = static_cast<int>(sizeof(kSpecs) / sizeof(kSpecs[0]));
 
@@ -98,6 +99,7 @@ int Options::*integer_member(OptionId id) {
     case OptionId::OutlineNeighbours: return &Options::outline_neighbours;
     case OptionId::Crop: return &Options::crop;
     case OptionId::Strict: return &Options::strict;
+    case OptionId::SmoothTurned: return &Options::smooth_turned;
     default: return nullptr;
   }
 }

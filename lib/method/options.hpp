@@ -38,6 +38,11 @@ struct Options {
   /// default since it refits the leaves it repairs (0.4): folds and mean distance fall or stay
   /// on every shape of dbs-bench-folds and every cloud of dbs-bench.
   int repair = 1;
+  /// 1: the (u,v) of points on turned sheets and around them are smoothed and their leaves
+  /// refitted (turned_smoothing.hpp), kept when the mean distance stays within the larger of
+  /// the one before and the target: fewer folds for more points on turned sheets, so off by
+  /// default.
+  int smooth_turned = 0;
   /// The Ceres refinement (curve_refinement.hpp), used with Solver::Ceres only: the robust
   /// loss, its scale in cloud units (0 = derived from the cloud: 3 sigma of its estimated
   /// noise, at least one spacing h), iterations per curve and the function tolerance.
@@ -86,6 +91,7 @@ enum class OptionId {
   OutlineNeighbours = 16,
   Crop = 17,
   Strict = 18,
+  SmoothTurned = 19,
 };
 
 struct OptionInfo {

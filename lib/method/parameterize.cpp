@@ -27,6 +27,7 @@
 #include "subdivide.hpp"
 #include "surface_projection.hpp"
 #include "turned_sheets.hpp"
+#include "turned_smoothing.hpp"
 #include "work_meter.hpp"
 
 namespace dbs {
@@ -220,6 +221,7 @@ class Driver {
         result_.stage_seconds.parameterize += seconds_since(repair_start);
       }
     }
+    if (options_.smooth_turned) smooth_turned(judged, folds);
     // The surface under the judged points, against the normals the last judge found.
     folds_start = Clock::now();
     const TurnedSheets turned = turned_sheets(result_, judged, folds, threads_);
@@ -562,6 +564,38 @@ class Driver {
   /// Points the fold measure judged folded, collapsed, scrambled or torn: what the repair is for.
   static std::size_t doubted_points(const FoldMeasure& folds) {
     return static_cast<std::size_t>(std::count_if(folds.state.begin(), folds.state.end(), doubted_verdict));
+  }
+
+  /// The smoothing of turned sheets (turned_smoothing.hpp) of the result that `folds` judged
+  /// on the points `judged`: kept when the mean distance stays within the larger of the one
+  /// before and the target used, and `folds` is then the judge of the smoothed result; undone
+  /// otherwise. On a sampled cloud every point takes the oriented normal of its nearest judged
+  /// point.
+  void smooth_turned(std::vector<std::size_t>& judged, FoldMeasure& folds) {
+    auto start = Clock::now();
+    const TurnedSheets turned = turned_sheets(result_, judged, folds, threads_);
+    if (turned.turned == 0) {
+      result_.stage_seconds.folds += seconds_since(start);
+      return;
+    }
+    std::vector<char> flags(points_.size(), 0);
+    for (std::size_t i : turned.points) flags[i] = 1;
+    const std::vector<Vec3> normals = judged.empty() ? folds.right_normal : spread_from_judged(points_, judged, folds.right_normal, threads_, &meter_);
+    const RepairSnapshot unsmoothed(result_);
+    const double mean_before = mean_counted_distance();
+    const TurnedSmoothing smoothed = smooth_turned_sheets(result_, points_, flags, normals, refit_outliers(result_, points_, threads_), threads_, &meter_);
+    const std::vector<std::vector<double>> distances = counted_distances_by_patch();
+    for (int id : smoothed.touched) judge_leaf(result_.patches[static_cast<std::size_t>(id)], distances[static_cast<std::size_t>(id)]);
+    result_.stage_seconds.parameterize += seconds_since(start);
+    if (smoothed.moved == 0) return;
+    if (mean_counted_distance() > std::max(mean_before, result_.accuracy)) {
+      unsmoothed.restore(result_);
+      return;
+    }
+    result_.smoothed_points = smoothed.moved;
+    start = Clock::now();
+    folds = judge_folds(judged);
+    result_.stage_seconds.folds += seconds_since(start);
   }
 
   /// The last-resort repair (fold_repair.hpp) of the far points and those flagged in

@@ -26,6 +26,8 @@ struct Result {
   /// neighbours (its distance is then to the surface at that (u,v)); all 0 when it was off.
   std::vector<char> repaired;
   std::size_t repaired_points = 0;
+  /// Points the smoothing of turned sheets moved (turned_smoothing.hpp); 0 when it was off.
+  std::size_t smoothed_points = 0;
   // the quadtree; patches[id].id == id; patches[0] is the root
   std::vector<Patch> patches;
   // summary

@@ -119,7 +119,7 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   json.integer("points", static_cast<long long>(cloud.size()));
   json.begin_object("options");
   // The parameterization's options (the outline's neighbourhood is not one of them).
-  for (int id = 0; id <= static_cast<int>(OptionId::Strict); ++id)
+  for (int id = 0; id <= static_cast<int>(OptionId::SmoothTurned); ++id)
     if (id != static_cast<int>(OptionId::OutlineNeighbours)) json.number(option_info(id).name, get_option(options, id));
   json.end_object();
   json.begin_object("timings_seconds");
@@ -192,6 +192,7 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   json.integer("coincident_points", static_cast<long long>(result.coincident_points));
   json.number("folded_share", result.folded_share);
   json.integer("repaired_points", static_cast<long long>(result.repaired_points));
+  json.integer("smoothed_points", static_cast<long long>(result.smoothed_points));
   json.end_object();
   // The inputs checked against each other (DBS_STAT_BOUNDARY_GAP and the five after it).
   json.begin_object("inputs");

@@ -148,8 +148,8 @@ static void statistics(void **state) {
   assert_true(result_stat(f->result, DBS_STAT_TURNED_SHARE) == 0);
 
   double value = -7;
-  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 37)");
-  assert_failure(dbs_result_stat(f->result, 37, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 37 ");
+  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 38)");
+  assert_failure(dbs_result_stat(f->result, 38, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 38 ");
   assert_true(value == -7);
 }
 
