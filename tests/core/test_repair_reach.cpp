@@ -15,31 +15,23 @@
 #include "repair_snapshot.hpp"
 
 #include "core_test_support.hpp"
+#include "fold_shape_runs.hpp"
 
 namespace {
 
 using dbs::Vec3;
 using dbs_folds::FoldShape;
 
-std::vector<Vec3> points_of(const std::vector<double>& xyz) {
-  std::vector<Vec3> p;
-  for (std::size_t i = 0; i + 2 < xyz.size(); i += 3) p.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
-  return p;
-}
+using fold_runs::points_of;
+using fold_runs::reference_folds;
 
 dbs::Result run(const FoldShape& shape, int repair, int threads = 0, int max_level = dbs::Options().max_level) {
-  const dbs::Boundary boundary(points_of(shape.bottom), points_of(shape.right), points_of(shape.top), points_of(shape.left));
+  const dbs::Boundary boundary = fold_runs::boundary_of(shape);
   dbs::Options options;
   options.repair = repair;
   options.threads = threads;
   options.max_level = max_level;
   return dbs::parameterize(dbs::PointCloud(points_of(shape.xyz)), boundary, options);
-}
-
-std::size_t reference_folds(const FoldShape& shape, const dbs::Result& r) {
-  std::vector<double> uv;
-  for (std::size_t i = 0; i < r.u.size(); ++i) uv.insert(uv.end(), {r.u[i], r.v[i]});
-  return dbs_folds::fold_share(uv, shape.triangles).folded;
 }
 
 std::size_t doubted(const dbs::FoldMeasure& m) {

@@ -15,24 +15,20 @@
 #include <string>
 #include <vector>
 
-#include "boundary.hpp"
 #include "fold_shapes.hpp"
 #include "parameterize.hpp"
 #include "point_cloud.hpp"
 #include "turned_smoothing.hpp"
 
 #include "core_test_support.hpp"
+#include "fold_shape_runs.hpp"
 
 namespace {
 
 using dbs::Vec3;
 using dbs_folds::FoldShape;
 
-std::vector<Vec3> points_of(const std::vector<double>& xyz) {
-  std::vector<Vec3> p;
-  for (std::size_t i = 0; i + 2 < xyz.size(); i += 3) p.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
-  return p;
-}
+using fold_runs::points_of;
 
 struct Run {
   dbs::Result result;
@@ -40,18 +36,12 @@ struct Run {
 };
 
 Run run(const FoldShape& shape, int smooth, int threads = 2) {
-  const dbs::Boundary boundary(points_of(shape.bottom), points_of(shape.right), points_of(shape.top), points_of(shape.left));
   dbs::Options options;
   options.smooth_turned = smooth;
   options.threads = threads;
   options.warning = [](const char*) {};
-  Run r{dbs::parameterize(dbs::PointCloud(points_of(shape.xyz)), boundary, options), 0};
-  std::vector<double> uv;
-  for (std::size_t i = 0; i < r.result.u.size(); ++i) {
-    uv.push_back(r.result.u[i]);
-    uv.push_back(r.result.v[i]);
-  }
-  r.folds = dbs_folds::fold_share(uv, shape.triangles).folded;
+  Run r{dbs::parameterize(dbs::PointCloud(points_of(shape.xyz)), fold_runs::boundary_of(shape), options), 0};
+  r.folds = fold_runs::reference_folds(shape, r.result);
   return r;
 }
 
