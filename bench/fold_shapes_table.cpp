@@ -300,7 +300,7 @@ int main(int argc, char** argv) {
   std::printf("folds: reference triangles whose signed (u,v) area is negative or below 1e-3 of the median, as inverted+collapsed;\n"
               "to truth: mean distance of the result surface at each point's (u,v) to the noise-free surface;\n"
               "turned: points on the result surface where its normal Su x Sv points against the noise-free surface's; ref.-free turned: the library's count;\n"
-              "stages: the seconds of time (s) by stage, index / evolve / subdivide / project (with the repair) / folds (the fold measure)\n\n");
+              "stages: the seconds of time (s) by stage, index / evolve / subdivide / project (with the repair and the smoothing) / folds (the fold measure)\n\n");
   std::printf("| shape | points | triangles | levels | patches | folds | folds %% | ref.-free folds | mean distance | target | to truth | time (s) | meshless folds | meshless %% | meshless time (s) | turned | ref.-free turned | stages (s) |\n");
   std::printf("|-------|-------:|----------:|-------:|--------:|------:|--------:|----------------:|--------------:|-------:|---------:|---------:|---------------:|-----------:|------------------:|-------:|-----------------:|-----------:|\n");
   std::fflush(stdout);

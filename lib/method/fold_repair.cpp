@@ -251,8 +251,8 @@ bool beyond_repair_reach(const Result& result, std::size_t i) {
   return d > kRepairFactor * result.accuracy && d > kRepairSpacings * result.length_scale;
 }
 
-std::vector<char> refit_outliers(const Result& result, const std::vector<Vec3>& points, int threads) {
-  return left_out_or_isolated(result, points, CloudIndex(points), far_from_surface(result), threads);
+std::vector<char> refit_outliers(const Result& result, const std::vector<Vec3>& points, const CloudIndex& index, int threads) {
+  return left_out_or_isolated(result, points, index, far_from_surface(result), threads);
 }
 
 bool repair_has_work(const Result& result, const std::vector<char>& suspect) {

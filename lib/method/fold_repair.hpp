@@ -35,6 +35,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "cloud_index.hpp"
 #include "grid_fit.hpp"
 #include "result.hpp"
 #include "work_meter.hpp"
@@ -94,7 +95,7 @@ std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>&
 
 /// Points that neither move nor take part in a refit: those left out of the result (far outside
 /// the body, cropped) and far points that stand alone, gross outliers (see the header).
-std::vector<char> refit_outliers(const Result& result, const std::vector<Vec3>& points, int threads);
+std::vector<char> refit_outliers(const Result& result, const std::vector<Vec3>& points, const CloudIndex& index, int threads);
 
 /// Whether repair_folds would take any point: one flagged in `suspect` or a far one (the
 /// driver saves the result for a second try only then).

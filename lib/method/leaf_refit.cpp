@@ -67,7 +67,7 @@ std::vector<int> refit_marked_leaves(Result& result, const std::vector<Vec3>& po
     for (std::size_t i : members[id]) before.push_back((result.evaluate(result.u[i], result.v[i]) - points[i]).norm());
     const BaseSurface old_surface = leaf.surface;
     const Grid old_grid = leaf.grid;
-    if (!fit_grid_to_parameters(leaf, data[id], points, result.u, result.v, &basis)) return;  // not refitted: the caller puts its moved points back
+    if (!fit_grid_to_parameters(leaf, data[id], points, result.u, result.v, &basis)) return;  // not refitted: the caller decides about its moved points
     for (std::size_t i : members[id]) after.push_back((result.evaluate(result.u[i], result.v[i]) - points[i]).norm());
     // A fit that would move the surface away from most of the leaf's points is not kept.
     if (median(after) > median(before)) {

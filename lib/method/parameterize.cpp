@@ -568,27 +568,49 @@ class Driver {
 
   /// The smoothing of turned sheets (turned_smoothing.hpp) of the result that `folds` judged
   /// on the points `judged`: kept when the mean distance stays within the larger of the one
-  /// before and the target used, and `folds` is then the judge of the smoothed result; undone
-  /// otherwise. On a sampled cloud every point takes the oriented normal of its nearest judged
-  /// point.
+  /// before and the target used and the run does not stop meeting that target, and `folds`
+  /// is then the judge of the smoothed result; undone otherwise. On a sampled cloud every
+  /// point takes the verdict (turned or not) and the oriented normal of its nearest judged
+  /// point, so that a turned sheet is smoothed whole, not in rings around the sample.
   void smooth_turned(std::vector<std::size_t>& judged, FoldMeasure& folds) {
     auto start = Clock::now();
     const TurnedSheets turned = turned_sheets(result_, judged, folds, threads_);
-    if (turned.turned == 0) {
-      result_.stage_seconds.folds += seconds_since(start);
-      return;
-    }
+    result_.stage_seconds.folds += seconds_since(start);
+    if (turned.turned == 0) return;
+    start = Clock::now();
     std::vector<char> flags(points_.size(), 0);
-    for (std::size_t i : turned.points) flags[i] = 1;
-    const std::vector<Vec3> normals = judged.empty() ? folds.right_normal : spread_from_judged(points_, judged, folds.right_normal, threads_, &meter_);
+    std::vector<Vec3> normals;
+    if (judged.empty()) {
+      for (std::size_t i : turned.points) flags[i] = 1;
+      normals = folds.right_normal;
+    } else {
+      std::vector<std::int8_t> judged_flags(judged.size(), 0);
+      std::vector<std::size_t> slot(points_.size(), 0);
+      for (std::size_t k = 0; k < judged.size(); ++k) slot[judged[k]] = k;
+      for (std::size_t i : turned.points) judged_flags[slot[i]] = 1;
+      const std::vector<std::int8_t> spread = spread_from_judged(points_, judged, judged_flags, threads_, &meter_);
+      for (std::size_t i = 0; i < points_.size(); ++i) flags[i] = spread[i] != 0 && !result_.left_out(i);
+      normals = spread_from_judged(points_, judged, folds.right_normal, threads_, &meter_);
+    }
     const RepairSnapshot unsmoothed(result_);
     const double mean_before = mean_counted_distance();
-    const TurnedSmoothing smoothed = smooth_turned_sheets(result_, points_, flags, normals, refit_outliers(result_, points_, threads_), threads_, &meter_);
+    const bool met_before = all_leaves_accurate();
+    const CloudIndex index(points_, IndexBuild{threads_, &meter_});
+    const TurnedSmoothing smoothed = smooth_turned_sheets(result_, points_, index, flags, normals, refit_outliers(result_, points_, index, threads_), threads_, &meter_);
     const std::vector<std::vector<double>> distances = counted_distances_by_patch();
-    for (int id : smoothed.touched) judge_leaf(result_.patches[static_cast<std::size_t>(id)], distances[static_cast<std::size_t>(id)]);
+    for (int id : smoothed.touched) {
+      Patch& leaf = result_.patches[static_cast<std::size_t>(id)];
+      const std::vector<double>& own = distances[static_cast<std::size_t>(id)];
+      if (!own.empty()) {
+        judge_leaf(leaf, own);
+      } else {  // every point left it: nothing to miss
+        leaf.mean_distance = leaf.max_distance = leaf.error = 0.0;
+        leaf.accurate = true;
+      }
+    }
     result_.stage_seconds.parameterize += seconds_since(start);
     if (smoothed.moved == 0) return;
-    if (mean_counted_distance() > std::max(mean_before, result_.accuracy)) {
+    if (!(mean_counted_distance() <= std::max(mean_before, result_.accuracy)) || (met_before && !all_leaves_accurate())) {
       unsmoothed.restore(result_);
       return;
     }
@@ -596,6 +618,13 @@ class Driver {
     start = Clock::now();
     folds = judge_folds(judged);
     result_.stage_seconds.folds += seconds_since(start);
+  }
+
+  /// Whether every leaf met the target used (what summarize() makes DBS_STAT_ACCURACY_MET of).
+  bool all_leaves_accurate() const {
+    for (const Patch& p : result_.patches)
+      if (p.is_leaf() && !p.accurate) return false;
+    return true;
   }
 
   /// The last-resort repair (fold_repair.hpp) of the far points and those flagged in

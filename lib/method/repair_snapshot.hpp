@@ -1,5 +1,5 @@
-// What the last-resort repair may change in a result, saved so that one repair can be tried
-// and undone: every point's (u,v), distance, patch, level and flag, and every leaf's surface,
+// What the last-resort repair (and the smoothing of turned sheets) may change in a result,
+// saved so that one repair can be tried and undone: every point's (u,v), distance, patch, level and flag, and every leaf's surface,
 // grid and judged figures (a refit changes a leaf's grid; no other patch is touched). The subclouds, which the repair
 // never touches and which hold most of a result's memory, are not copied.
 #pragma once

@@ -89,15 +89,15 @@ Vec2 predicted(const Result& result, const std::vector<Vec3>& points, const std:
 
 }  // namespace
 
-TurnedSmoothing smooth_turned_sheets(Result& result, const std::vector<Vec3>& points, const std::vector<char>& turned, const std::vector<Vec3>& normals, const std::vector<char>& outlier,
-                                     int threads, WorkMeter* meter) {
+TurnedSmoothing smooth_turned_sheets(Result& result, const std::vector<Vec3>& points, const CloudIndex& index, const std::vector<char>& turned, const std::vector<Vec3>& normals,
+                                     const std::vector<char>& outlier, int threads, WorkMeter* meter) {
   const std::size_t n = points.size();
   if (turned.size() != n || normals.size() != n || outlier.size() != n)
     fail(ErrorCode::InvalidArgument, "smooth_turned_sheets: " + std::to_string(turned.size()) + " turned flags, " + std::to_string(normals.size()) + " normals and " +
                                          std::to_string(outlier.size()) + " outlier flags for " + std::to_string(n) + " points");
   TurnedSmoothing out;
+  if (index.size() != n) fail(ErrorCode::InvalidArgument, "smooth_turned_sheets: the index holds " + std::to_string(index.size()) + " of the " + std::to_string(n) + " points");
   if (std::find(turned.begin(), turned.end(), 1) == turned.end()) return out;
-  const CloudIndex index(points);
   const std::vector<char> candidate = around_turned(index, points, turned);
   auto stays = [&](std::size_t i) {
     const bool clamped = i < result.clamped.size() && result.clamped[i];
@@ -112,7 +112,7 @@ TurnedSmoothing smooth_turned_sheets(Result& result, const std::vector<Vec3>& po
   });
   std::vector<char> moved(n, 0), touched(result.patches.size(), 0);
   for (std::size_t i = 0; i < n; ++i) {
-    if (std::isnan(to[i].x())) continue;
+    if (std::isnan(to[i].x()) || (to[i].x() == result.u[i] && to[i].y() == result.v[i])) continue;
     touched[static_cast<std::size_t>(result.patch[i])] = 1;
     place_on_leaf(result, points, i, to[i]);
     touched[static_cast<std::size_t>(result.patch[i])] = 1;

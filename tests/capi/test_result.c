@@ -146,6 +146,8 @@ static void statistics(void **state) {
   /* A smooth fixture's surface turns nowhere against its cloud. */
   assert_true(result_stat(f->result, DBS_STAT_TURNED_POINTS) == 0);
   assert_true(result_stat(f->result, DBS_STAT_TURNED_SHARE) == 0);
+  /* The smoothing of turned sheets is off by default. */
+  assert_true(result_stat(f->result, DBS_STAT_SMOOTHED_POINTS) == 0);
 
   double value = -7;
   assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 38)");
