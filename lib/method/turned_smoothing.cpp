@@ -95,8 +95,8 @@ TurnedSmoothing smooth_turned_sheets(Result& result, const std::vector<Vec3>& po
   if (turned.size() != n || normals.size() != n || outlier.size() != n)
     fail(ErrorCode::InvalidArgument, "smooth_turned_sheets: " + std::to_string(turned.size()) + " turned flags, " + std::to_string(normals.size()) + " normals and " +
                                          std::to_string(outlier.size()) + " outlier flags for " + std::to_string(n) + " points");
-  TurnedSmoothing out;
   if (index.size() != n) fail(ErrorCode::InvalidArgument, "smooth_turned_sheets: the index holds " + std::to_string(index.size()) + " of the " + std::to_string(n) + " points");
+  TurnedSmoothing out;
   if (std::find(turned.begin(), turned.end(), 1) == turned.end()) return out;
   const std::vector<char> candidate = around_turned(index, points, turned);
   auto stays = [&](std::size_t i) {
