@@ -221,10 +221,17 @@ class Driver {
         result_.stage_seconds.parameterize += seconds_since(repair_start);
       }
     }
-    if (options_.smooth_turned) smooth_turned(judged, folds);
-    // The surface under the judged points, against the normals the last judge found.
+    // The surface under the judged points, against the normals the last judge found; again
+    // after a smoothing of its turned sheets that was kept.
     folds_start = Clock::now();
-    const TurnedSheets turned = turned_sheets(result_, judged, folds, threads_);
+    TurnedSheets turned = turned_sheets(result_, judged, folds, threads_);
+    result_.stage_seconds.folds += seconds_since(folds_start);
+    if (options_.smooth_turned && turned.turned > 0 && smooth_turned(judged, turned, folds)) {
+      folds_start = Clock::now();
+      turned = turned_sheets(result_, judged, folds, threads_);
+      result_.stage_seconds.folds += seconds_since(folds_start);
+    }
+    folds_start = Clock::now();
     result_.turned_points = turned.turned;
     result_.turned_share = turned.share;
     result_.turned.assign(points_.size(), 0);
@@ -572,12 +579,9 @@ class Driver {
   /// is then the judge of the smoothed result; undone otherwise. On a sampled cloud every
   /// point takes the verdict (turned or not) and the oriented normal of its nearest judged
   /// point, so that a turned sheet is smoothed whole, not in rings around the sample.
-  void smooth_turned(std::vector<std::size_t>& judged, FoldMeasure& folds) {
+  /// `turned`: the turned sheets under `folds`. True when the smoothing was kept.
+  bool smooth_turned(std::vector<std::size_t>& judged, const TurnedSheets& turned, FoldMeasure& folds) {
     auto start = Clock::now();
-    const TurnedSheets turned = turned_sheets(result_, judged, folds, threads_);
-    result_.stage_seconds.folds += seconds_since(start);
-    if (turned.turned == 0) return;
-    start = Clock::now();
     std::vector<char> flags(points_.size(), 0);
     std::vector<Vec3> normals;
     if (judged.empty()) {
@@ -609,15 +613,16 @@ class Driver {
       }
     }
     result_.stage_seconds.parameterize += seconds_since(start);
-    if (smoothed.moved == 0) return;
+    if (smoothed.moved == 0) return false;
     if (!(mean_counted_distance() <= std::max(mean_before, result_.accuracy)) || (met_before && !all_leaves_accurate())) {
       unsmoothed.restore(result_);
-      return;
+      return false;
     }
     result_.smoothed_points = smoothed.moved;
     start = Clock::now();
     folds = judge_folds(judged);
     result_.stage_seconds.folds += seconds_since(start);
+    return true;
   }
 
   /// Whether every leaf met the target used (what summarize() makes DBS_STAT_ACCURACY_MET of).
