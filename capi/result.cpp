@@ -65,9 +65,11 @@ double stat_value(const dbs::Result& r, int32_t stat) {
     case DBS_STAT_TURNED_POINTS: return static_cast<double>(r.turned_points);
     case DBS_STAT_TURNED_SHARE: return r.turned_share;
     case DBS_STAT_SMOOTHED_POINTS: return static_cast<double>(r.smoothed_points);
+    case DBS_STAT_PASSES: return static_cast<double>(r.passes);
+    case DBS_STAT_COARSE: return r.coarse ? 1.0 : 0.0;
     default: break;
   }
-  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_SMOOTHED_POINTS + 1) + ")");
+  fail_status(DBS_ERR_OUT_OF_RANGE, "stat " + std::to_string(stat) + " is outside its range [0, " + std::to_string(DBS_STAT_COARSE + 1) + ")");
 }
 
 }  // namespace

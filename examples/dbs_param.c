@@ -50,6 +50,8 @@ static const char *const usage_text =
     "  --repair 0|1               last-resort repair of points the surfaces never reached [1]\n"
     "  --smooth-turned 0|1        smooth the (u,v) on turned sheets of the surface: fewer folds,\n"
     "                             more points on turned sheets [0]\n"
+    "  --coarse-pass 0|1          where the surfaces pleated, a second pass from a coarse root;\n"
+    "                             the better result is kept [1]\n"
     "  --auto-boundary            no BOUNDARY: the cloud's outline cut at its four corners\n"
     "                             (dbs_boundary_detect)\n"
     "  --outline-neighbours N     neighbourhood of the outline with --auto-boundary [24]\n"
@@ -153,6 +155,7 @@ static struct option_value library_options[] = {
     {"--noise-floor", DBS_OPT_NOISE_FLOOR, VALUE_INT, NULL, 0, 0.0, 0},
     {"--repair", DBS_OPT_REPAIR, VALUE_INT, NULL, 0, 0.0, 0},
     {"--smooth-turned", DBS_OPT_SMOOTH_TURNED, VALUE_INT, NULL, 0, 0.0, 0},
+    {"--coarse-pass", DBS_OPT_COARSE_PASS, VALUE_INT, NULL, 0, 0.0, 0},
     {"--loss", DBS_OPT_LOSS, VALUE_LOSS, NULL, 0, 0.0, 0},
     {"--loss-scale", DBS_OPT_LOSS_SCALE, VALUE_DOUBLE, NULL, 0, 0.0, 0},
     {"--ceres-iterations", DBS_OPT_CERES_MAX_ITERATIONS, VALUE_INT, NULL, 0, 0.0, 0},
@@ -458,6 +461,8 @@ static void print_summary(const dbs_result *result, const char *result_path, dou
          stat_of(result, DBS_STAT_TURNED_POINTS));
   if (stat_of(result, DBS_STAT_REPAIRED_POINTS) > 0.0) printf("repaired        %.0f points\n", stat_of(result, DBS_STAT_REPAIRED_POINTS));
   if (stat_of(result, DBS_STAT_SMOOTHED_POINTS) > 0.0) printf("smoothed        %.0f points on and around turned sheets\n", stat_of(result, DBS_STAT_SMOOTHED_POINTS));
+  if (stat_of(result, DBS_STAT_PASSES) > 1.0)
+    printf("passes          2: the surfaces pleated, a coarse pass ran too; kept: the %s pass\n", stat_of(result, DBS_STAT_COARSE) != 0.0 ? "coarse" : "first");
   printf("inputs          boundary %.3g spacings from the cloud, cloud/boundary size %.3g, domain covered %.1f %%, %.0f points clamped\n",
          stat_of(result, DBS_STAT_BOUNDARY_GAP), stat_of(result, DBS_STAT_SCALE_RATIO), 100.0 * stat_of(result, DBS_STAT_COVERAGE), stat_of(result, DBS_STAT_CLAMPED_POINTS));
   if (stat_of(result, DBS_STAT_CROPPED_POINTS) > 0.0)

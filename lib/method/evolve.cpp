@@ -99,7 +99,7 @@ void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& poin
 
 void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3>& points, const PointList& indices, std::size_t stride, int threads, double& out_mean,
                        double& out_max, LossKind loss, double loss_scale, double* out_loss_mean, WorkMeter* meter, std::vector<Vec2>* feet, std::size_t feet_step,
-                       double stop_above, bool* out_stopped) {
+                       double stop_above, bool* out_stopped, double* out_measured_error) {
   stride = std::max<std::size_t>(stride, 1);
   const std::size_t count = (indices.size() + stride - 1) / stride;
   out_mean = 0.0;
@@ -126,8 +126,10 @@ void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3
   // unmeasured counts as 0. Returns the error the target is judged on.
   auto settle = [&](const std::vector<char>* measured) {
     double sum = 0.0, loss_sum = 0.0, max = 0.0;
+    std::size_t measured_count = 0;
     for (std::size_t k = 0; k < count; ++k) {
       if (measured && !(*measured)[k]) continue;
+      ++measured_count;
       sum += distance[k];
       if (out_loss_mean) loss_sum += robust_distance(loss, loss_scale, distance[k]);
       max = std::max(max, distance[k]);
@@ -135,6 +137,7 @@ void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3
     out_mean = sum / static_cast<double>(count);
     out_max = max;
     if (out_loss_mean) *out_loss_mean = loss_sum / static_cast<double>(count);
+    if (out_measured_error) *out_measured_error = (out_loss_mean ? loss_sum : sum) / static_cast<double>(std::max<std::size_t>(measured_count, 1));
     return out_loss_mean ? *out_loss_mean : out_mean;
   };
   if (!std::isfinite(stop_above) || count < kStopRounds.front()) {
@@ -172,6 +175,7 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
   patch.ceres_iterations = 0;
   patch.solver = settings.refinement.enabled ? 1 : 0;
   patch.error = 0.0;
+  patch.far_above = false;
   if (patch.subcloud.empty()) {
     patch.mean_distance = patch.max_distance = 0.0;
     patch.accurate = true;
@@ -198,18 +202,34 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
       double pilot_mean = 0.0, pilot_max = 0.0, pilot_loss = 0.0;
       measure_distances(surface_projector, points, patch.subcloud, stride * (sampled / kPilotPoints), settings.threads, pilot_mean, pilot_max, settings.error_loss,
                         settings.error_loss_scale, robust ? &pilot_loss : nullptr, settings.meter, &feet, sampled / kPilotPoints);
-      if ((robust ? pilot_loss : pilot_mean) > kPilotMargin * settings.accuracy) {
+      const double pilot_error = robust ? pilot_loss : pilot_mean;
+      if (settings.far_above > 0.0 && pilot_error > settings.far_above * settings.accuracy) {
+        patch.far_above = true;
+        if (settings.stop_when_far) {
+          mean = pilot_mean;
+          max = pilot_max;
+          error = pilot_error;
+          if (tick) tick(grid);
+          break;
+        }
+      }
+      if (pilot_error > kPilotMargin * settings.accuracy) {
         if (tick) tick(grid);
         continue;
       }
     }
     // A grid that can still grow needs only to know whether it met the target: its
     // measurement stops once it is certainly above it.
+    double measured_error = 0.0;
     measure_distances(surface_projector, points, patch.subcloud, stride, settings.threads, mean, max, settings.error_loss, settings.error_loss_scale, robust ? &loss_mean : nullptr,
-                      settings.meter, &feet, 1, grid < settings.max_grid ? settings.accuracy : std::numeric_limits<double>::infinity());
+                      settings.meter, &feet, 1, grid < settings.max_grid ? settings.accuracy : std::numeric_limits<double>::infinity(), nullptr, &measured_error);
     error = robust ? loss_mean : mean;
     if (tick) tick(grid);
     if (error <= settings.accuracy || grid >= settings.max_grid) break;
+    if (settings.far_above > 0.0 && measured_error > settings.far_above * settings.accuracy) {
+      patch.far_above = true;
+      if (settings.stop_when_far) break;
+    }
   }
   // The sample's figures; a patch that stays a leaf is measured on all its points by the
   // projection of its subcloud (A2), which computes those distances anyway.
@@ -247,6 +267,7 @@ void evolve_patch_with_restart(Patch& patch, const std::vector<Vec3>& points, co
     kept.damped_nodes += dropped.damped_nodes;
     kept.refined_curves += dropped.refined_curves;
     kept.ceres_iterations += dropped.ceres_iterations;
+    kept.far_above = kept.far_above || dropped.far_above;
     kept.restarts = patch.restarts + 1;
     if (&kept != &other) return;
     other.subcloud.swap(patch.subcloud);

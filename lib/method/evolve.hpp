@@ -47,6 +47,12 @@ struct EvolveSettings {
   /// force subdivision; LossKind::None: the plain mean distance.
   LossKind error_loss = LossKind::None;
   double error_loss_scale = 0.0;
+  /// 0, or a factor F: a patch whose error at a grid is above F times the target is marked
+  /// (Patch::far_above) and, with stop_when_far, stops growing its grid there, left to be
+  /// subdivided (parameterize.hpp: the coarse pass, the root only). Without stop_when_far
+  /// the evolution is the one without the factor.
+  double far_above = 0.0;
+  bool stop_when_far = false;
 };
 
 /// Called after each grid evolution with the grid size reached; may throw to cancel.
@@ -92,9 +98,12 @@ void measure_distances(const BaseSurface& surface, const std::vector<Vec3>& poin
 /// distance, or the loss's mean when out_loss_mean is given) is certainly above it: the
 /// figures are then lower bounds (the points left unmeasured count as 0, their feet stay as
 /// they were) and `out_stopped`, when given, is set; the figures of a measurement that did not
-/// stop are those of one without the bound.
+/// stop are those of one without the bound. `out_measured_error`, when given, receives the error
+/// over the points measured only (their mean, not a lower bound): after a stop, an estimate of
+/// the whole sample's from the evenly spread rounds measured; otherwise the error itself.
 void measure_distances(const SurfaceProjector& projector, const std::vector<Vec3>& points, const PointList& indices, std::size_t stride, int threads, double& out_mean,
                        double& out_max, LossKind loss = LossKind::None, double loss_scale = 0.0, double* out_loss_mean = nullptr, WorkMeter* meter = nullptr,
-                       std::vector<Vec2>* feet = nullptr, std::size_t feet_step = 1, double stop_above = std::numeric_limits<double>::infinity(), bool* out_stopped = nullptr);
+                       std::vector<Vec2>* feet = nullptr, std::size_t feet_step = 1, double stop_above = std::numeric_limits<double>::infinity(), bool* out_stopped = nullptr,
+                       double* out_measured_error = nullptr);
 
 }  // namespace dbs

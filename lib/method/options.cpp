@@ -43,6 +43,7 @@ const OptionSpec kSpecs[] = {
     {{"crop", true, 0.0, 1.0}, false},
     {{"strict", true, 0.0, 1.0}, false},
     {{"smooth_turned", true, 0.0, 1.0}, false},
+    {{"coarse_pass", true, 0.0, 1.0}, false},
 };
 constexpr int kOptionCount = static_cast<int>(sizeof(kSpecs) / sizeof(kSpecs[0]));
 
@@ -100,6 +101,7 @@ int Options::*integer_member(OptionId id) {
     case OptionId::Crop: return &Options::crop;
     case OptionId::Strict: return &Options::strict;
     case OptionId::SmoothTurned: return &Options::smooth_turned;
+    case OptionId::CoarsePass: return &Options::coarse_pass;
     default: return nullptr;
   }
 }

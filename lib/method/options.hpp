@@ -20,6 +20,13 @@ using LevelFn = std::function<bool(int level, const std::vector<const Patch*>& p
 /// Warning observer: one line naming a likely mistake in the inputs (input_checks.hpp).
 using WarningFn = std::function<void(const char* message)>;
 
+/// The coarse pass (parameterize.hpp): its root stops growing its grid once its error is above
+/// this many times the target ...
+constexpr double kCoarseStop = 20.0;
+/// ... and it runs when the plain pass's root got that far above and more than this share of
+/// the points judged lies on turned sheets.
+constexpr double kCoarseTurnedShare = 0.03;
+
 struct Options {
   double accuracy = 0.0;            // absolute mean-distance target; 0 = use relative_accuracy
   double relative_accuracy = 1e-3;  // fraction of the cloud's box diagonal (CornerFrameBox)
@@ -43,6 +50,10 @@ struct Options {
   /// the one before and the target: fewer folds for more points on turned sheets, so off by
   /// default.
   int smooth_turned = 0;
+  /// 1: where the plain pass pleated (its root ended far above the target and turned sheets
+  /// hold a share of the points), a coarse pass runs too and the better is kept
+  /// (parameterize.hpp); 0: the plain pass only.
+  int coarse_pass = 1;
   /// The Ceres refinement (curve_refinement.hpp), used with Solver::Ceres only: the robust
   /// loss, its scale in cloud units (0 = derived from the cloud: 3 sigma of its estimated
   /// noise, at least one spacing h), iterations per curve and the function tolerance.
@@ -68,6 +79,7 @@ struct Options {
   std::function<void(const char* stage, unsigned long long units)> work_probe;
   /// For tests: a patch's rays see at most about this many of its points (ray_cloud.hpp).
   std::size_t max_ray_points = kMaxRayPoints;
+
 };
 
 /// Option identifiers; values equal the DBS_OPT_* numbers of the C API.
@@ -92,6 +104,7 @@ enum class OptionId {
   Crop = 17,
   Strict = 18,
   SmoothTurned = 19,
+  CoarsePass = 20,
 };
 
 struct OptionInfo {

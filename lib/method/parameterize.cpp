@@ -75,10 +75,18 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 /// so each level gets half of what is left).
 double level_progress_end(int level) { return kIndexEnd + (kLevelsEnd - kIndexEnd) * (1.0 - std::pow(0.5, level + 1)); }
 
+/// Thrown by the coarse pass where it gives up (Driver).
+struct CoarsePassAbandoned {};
+
 class Driver {
  public:
-  Driver(const PointCloud& cloud, const Boundary& boundary, const Options& options)
-      : points_(cloud.points()), boundary_(boundary), options_(options), progress_(options.progress), threads_(resolve_threads(options.threads)) {
+  /// `coarse`: the coarse pass (parameterize.hpp): the root stops growing its grid far above the
+  /// target, and the pass is given up (CoarsePassAbandoned) when its first level's error is above
+  /// `plain_first_level_error`, the plain pass's.
+  Driver(const PointCloud& cloud, const Boundary& boundary, const Options& options, bool coarse, double plain_first_level_error = 0.0)
+      : points_(cloud.points()), boundary_(boundary), options_(options), progress_(options.progress), threads_(resolve_threads(options.threads)),
+        plain_first_level_error_(plain_first_level_error) {
+    result_.coarse = coarse;
     meter_.set_report([this] { report_work(); });
     // Points far outside the cloud's body (cloud_body.hpp) decide nothing: not the relative
     // target, nor the spacing, nor any surface; they are placed after the others.
@@ -303,11 +311,32 @@ class Driver {
       PointList().swap(rays.points);  // the index holds its own copy
       projectors[k] = std::make_unique<DirectedProjector>(indices[k] ? *indices[k] : *cloud_index_, rays.length_scale);
       // Only the root starts far from the cloud, from the Coons patch of its boundary.
-      if (root) evolve_patch_with_restart(patch, points_, *projectors[k], settings);
-      else evolve_patch(patch, points_, *projectors[k], settings);
+      EvolveSettings own = settings;
+      // The root is watched for an error far above the target (the coarse pass stops it there),
+      // when it can be subdivided.
+      if (root && level < options_.max_level && patch.subcloud.size() >= kMinPointsToSubdivide) {
+        own.far_above = kCoarseStop;
+        own.stop_when_far = result_.coarse;
+      }
+      if (root) evolve_patch_with_restart(patch, points_, *projectors[k], own);
+      else evolve_patch(patch, points_, *projectors[k], own);
     });
+    if (level == 1) {
+      // The level's error, each patch weighted by its points: the plain pass keeps it, and the
+      // coarse pass gives up here when its children fit worse than the plain pass's did (a
+      // coarse root that left a feature unreached: the mushroom's cap).
+      double sum = 0.0, count = 0.0;
+      for (int id : ids) {
+        const Patch& p = result_.patches[id];
+        sum += p.error * static_cast<double>(p.point_count);
+        count += static_cast<double>(p.point_count);
+      }
+      result_.first_level_error = count > 0.0 ? sum / count : 0.0;
+      if (result_.coarse && result_.first_level_error > plain_first_level_error_) throw CoarsePassAbandoned{};
+    }
     for (int id : ids) {
       const Patch& p = result_.patches[id];
+      if (p.parent < 0) result_.root_far_above = p.far_above;
       result_.iterations += p.iterations;
       result_.refined_curves += p.refined_curves;
       result_.ceres_iterations += p.ceres_iterations;
@@ -887,6 +916,7 @@ class Driver {
   double stage_begin_ = 0.0, stage_end_ = 0.0;
   std::uint64_t stage_units_start_ = 0, stage_units_expected_ = 1;
   int threads_;
+  double plain_first_level_error_ = 0.0;
   Result result_;
   RefinementSettings refinement_;
   std::vector<char> inside_;  // per point: its foot lies inside its leaf (A2)
@@ -896,9 +926,61 @@ class Driver {
 
 }  // namespace
 
+namespace {
+
+/// `options` for one pass of parameterize(): its progress reported from `begin` on (the
+/// fraction f of the pass as begin + (1 - begin) f; a pass's own "done" is not passed on, the
+/// run's is reported once at the end) and the last fraction it passed on kept in `*last`; its
+/// warnings passed on unless an earlier pass gave the same message (`given` records them).
+Options pass_options(const Options& options, double begin, double* last, std::vector<std::string>& given) {
+  Options pass = options;
+  if (options.progress)
+    pass.progress = [&options, begin, last](double fraction, const char* stage) {
+      if (std::string(stage) == "done") return false;
+      *last = begin + (1.0 - begin) * fraction;
+      return options.progress(*last, stage);
+    };
+  if (options.warning)
+    pass.warning = [&options, &given](const char* message) {
+      if (std::find(given.begin(), given.end(), message) != given.end()) return;
+      given.emplace_back(message);
+      options.warning(message);
+    };
+  return pass;
+}
+
+}  // namespace
+
 Result parameterize(const PointCloud& cloud, const Boundary& boundary, const Options& options) {
   if (options.solver == Solver::Ceres && !ceres_available()) fail(ErrorCode::Unsupported, "the Ceres solver is not available: this libdbs was built without Ceres");
-  return Driver(cloud, boundary, options).run();
+  std::vector<std::string> given;
+  double last = 0.0;
+  Result plain = Driver(cloud, boundary, pass_options(options, 0.0, &last, given), false).run();
+  // The coarse pass only where the plain one pleated: its root ended far above the target and
+  // a share of the points lies on turned sheets.
+  const bool pleated = options.coarse_pass != 0 && plain.root_far_above && plain.turned_share > kCoarseTurnedShare;
+  Result* kept = &plain;
+  Result coarse;
+  if (pleated) {
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      coarse = Driver(cloud, boundary, pass_options(options, last, &last, given), true, plain.first_level_error).run();
+      if (coarse.mean_distance <= std::max(plain.accuracy, plain.mean_distance) && coarse.turned_points < plain.turned_points) kept = &coarse;
+    } catch (const CoarsePassAbandoned&) {
+      // Its time counts as evolution (where it stopped).
+      coarse.seconds = coarse.stage_seconds.evolve = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    const Result& other = kept == &coarse ? plain : coarse;
+    kept->passes = 2;
+    kept->seconds += other.seconds;
+    kept->stage_seconds.index += other.stage_seconds.index;
+    kept->stage_seconds.evolve += other.stage_seconds.evolve;
+    kept->stage_seconds.subdivide += other.stage_seconds.subdivide;
+    kept->stage_seconds.parameterize += other.stage_seconds.parameterize;
+    kept->stage_seconds.folds += other.stage_seconds.folds;
+  }
+  if (options.progress && options.progress(1.0, "done")) fail(ErrorCode::Cancelled, "cancelled by the progress callback during \"done\"");
+  return std::move(*kept);
 }
 
 }  // namespace dbs

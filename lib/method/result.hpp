@@ -48,6 +48,12 @@ struct Result {
   std::size_t turned_points = 0;
   double turned_share = 0.0;
   std::vector<char> turned;  // per point: 1 for those turned_points (empty until measured)
+  /// Passes of the method run (parameterize.hpp): 1, or 2 when the coarse pass ran after the
+  /// plain one; `coarse` says that this result is the coarse pass's.
+  int passes = 1;
+  bool coarse = false;
+  bool root_far_above = false;  // the root's error at a grid was above kCoarseStop times the target
+  double first_level_error = 0.0;  // the mean error of the patches of level 1 (weighted by their points; 0 without them)
   int levels = 0;             // quadtree levels present (1 = root only)
   int iterations = 0;         // grid evolutions over all patches
   int solver = 0;             // the solver that ran (Solver: 0 linear, 1 Ceres)

@@ -119,7 +119,7 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   json.integer("points", static_cast<long long>(cloud.size()));
   json.begin_object("options");
   // The parameterization's options (the outline's neighbourhood is not one of them).
-  for (int id = 0; id <= static_cast<int>(OptionId::SmoothTurned); ++id)
+  for (int id = 0; id <= static_cast<int>(OptionId::CoarsePass); ++id)
     if (id != static_cast<int>(OptionId::OutlineNeighbours)) json.number(option_info(id).name, get_option(options, id));
   json.end_object();
   json.begin_object("timings_seconds");
@@ -193,6 +193,8 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   json.number("folded_share", result.folded_share);
   json.integer("repaired_points", static_cast<long long>(result.repaired_points));
   json.integer("smoothed_points", static_cast<long long>(result.smoothed_points));
+  json.integer("passes", result.passes);
+  json.integer("coarse", result.coarse ? 1 : 0);
   json.end_object();
   // The inputs checked against each other (DBS_STAT_BOUNDARY_GAP and the five after it).
   json.begin_object("inputs");

@@ -38,6 +38,7 @@ static const struct option_row kOptions[] = {
     {DBS_OPT_CROP, "crop", 1, 0, 0, 1, 1, -1, 2},
     {DBS_OPT_STRICT, "strict", 1, 0, 0, 1, 1, -1, 2},
     {DBS_OPT_SMOOTH_TURNED, "smooth_turned", 1, 0, 0, 1, 1, -1, 2},
+    {DBS_OPT_COARSE_PASS, "coarse_pass", 1, 1, 0, 1, 1, -1, 2},
 };
 #define OPTION_COUNT (sizeof kOptions / sizeof kOptions[0])
 
@@ -186,7 +187,7 @@ static void the_wrong_type_is_rejected(void **state) {
 static void unknown_ids_are_rejected(void **state) {
   (void)state;
   dbs_options *options = new_options();
-  const int32_t unknown[] = {-1, 20, 1000};
+  const int32_t unknown[] = {-1, 21, 1000};
   for (int k = 0; k < 3; ++k) {
     char needle[48];
     snprintf(needle, sizeof needle, "option id %d", (int)unknown[k]);

@@ -148,10 +148,13 @@ static void statistics(void **state) {
   assert_true(result_stat(f->result, DBS_STAT_TURNED_SHARE) == 0);
   /* The smoothing of turned sheets is off by default. */
   assert_true(result_stat(f->result, DBS_STAT_SMOOTHED_POINTS) == 0);
+  /* Nothing pleated: one pass, not the coarse one. */
+  assert_true(result_stat(f->result, DBS_STAT_PASSES) == 1);
+  assert_true(result_stat(f->result, DBS_STAT_COARSE) == 0);
 
   double value = -7;
-  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 38)");
-  assert_failure(dbs_result_stat(f->result, 38, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 38 ");
+  assert_failure(dbs_result_stat(f->result, -1, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat -1 is outside its range [0, 40)");
+  assert_failure(dbs_result_stat(f->result, 40, &value), DBS_ERR_OUT_OF_RANGE, "dbs_result_stat", "stat 40 ");
   assert_true(value == -7);
 }
 

@@ -28,6 +28,8 @@ using fold_runs::reference_folds;
 dbs::Result run(const FoldShape& shape, int repair, int threads = 0, int max_level = dbs::Options().max_level) {
   const dbs::Boundary boundary = fold_runs::boundary_of(shape);
   dbs::Options options;
+  // The reaches are judged on the plain pass's result (the coarse pass, when it runs, repairs its own).
+  options.coarse_pass = 0;
   options.repair = repair;
   options.threads = threads;
   options.max_level = max_level;

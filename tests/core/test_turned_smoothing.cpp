@@ -43,6 +43,8 @@ struct Run {
 
 Run run(const FoldShape& shape, int smooth, int threads = 2, double relative_accuracy = dbs::Options().relative_accuracy) {
   dbs::Options options;
+  // The smoothing is judged on the plain pass's result, which its figures below are of.
+  options.coarse_pass = 0;
   options.smooth_turned = smooth;
   options.threads = threads;
   options.relative_accuracy = relative_accuracy;
