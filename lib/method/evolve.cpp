@@ -228,7 +228,13 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
     if (error <= settings.accuracy || grid >= settings.max_grid) break;
     if (settings.far_above > 0.0 && measured_error > settings.far_above * settings.accuracy) {
       patch.far_above = true;
-      if (settings.stop_when_far) break;
+      if (settings.stop_when_far) {
+        // The figures of a measurement cut short are lower bounds: the error and mean become
+        // the estimate from the points measured, comparable with a pilot's or a full one's.
+        error = measured_error;
+        if (!robust) mean = measured_error;
+        break;
+      }
     }
   }
   // The sample's figures; a patch that stays a leaf is measured on all its points by the

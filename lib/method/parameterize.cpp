@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <new>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -930,9 +931,10 @@ namespace {
 
 /// `options` for one pass of parameterize(): its progress reported from `begin` on (the
 /// fraction f of the pass as begin + (1 - begin) f; a pass's own "done" is not passed on, the
-/// run's is reported once at the end) and the last fraction it passed on kept in `*last`; its
-/// warnings passed on unless an earlier pass gave the same message (`given` records them).
-Options pass_options(const Options& options, double begin, double* last, std::vector<std::string>& given) {
+/// run's is reported once at the end) and the last fraction it passed on kept in `*last`. Its
+/// warnings go to `held` when given (the coarse pass's: passed on only if it is kept), else to
+/// the caller, unless an earlier pass gave the same message (`given` records them).
+Options pass_options(const Options& options, double begin, double* last, std::vector<std::string>& given, std::vector<std::string>* held = nullptr) {
   Options pass = options;
   if (options.progress)
     pass.progress = [&options, begin, last](double fraction, const char* stage) {
@@ -941,7 +943,11 @@ Options pass_options(const Options& options, double begin, double* last, std::ve
       return options.progress(*last, stage);
     };
   if (options.warning)
-    pass.warning = [&options, &given](const char* message) {
+    pass.warning = [&options, &given, held](const char* message) {
+      if (held) {
+        held->emplace_back(message);
+        return;
+      }
       if (std::find(given.begin(), given.end(), message) != given.end()) return;
       given.emplace_back(message);
       options.warning(message);
@@ -956,28 +962,47 @@ Result parameterize(const PointCloud& cloud, const Boundary& boundary, const Opt
   std::vector<std::string> given;
   double last = 0.0;
   Result plain = Driver(cloud, boundary, pass_options(options, 0.0, &last, given), false).run();
-  // The coarse pass only where the plain one pleated: its root ended far above the target and
-  // a share of the points lies on turned sheets.
-  const bool pleated = options.coarse_pass != 0 && plain.root_far_above && plain.turned_share > kCoarseTurnedShare;
+  // The coarse pass only where the plain one pleated: its root ended far above the target (and
+  // was subdivided) and a share of the points lies on turned sheets.
+  const bool pleated = options.coarse_pass != 0 && plain.root_far_above && plain.levels > 1 && plain.turned_share > kCoarseTurnedShare;
   Result* kept = &plain;
   Result coarse;
   if (pleated) {
     const auto start = std::chrono::steady_clock::now();
+    std::vector<std::string> held;
+    // The plain pass already passed (or failed) the strict checks of the inputs: the coarse
+    // pass, a second opinion, neither fails on them nor on anything but a cancel.
+    Options second = pass_options(options, last, &last, given, &held);
+    second.strict = 0;
     try {
-      coarse = Driver(cloud, boundary, pass_options(options, last, &last, given), true, plain.first_level_error).run();
+      coarse = Driver(cloud, boundary, second, true, plain.first_level_error).run();
       if (coarse.mean_distance <= std::max(plain.accuracy, plain.mean_distance) && coarse.turned_points < plain.turned_points) kept = &coarse;
     } catch (const CoarsePassAbandoned&) {
-      // Its time counts as evolution (where it stopped).
-      coarse.seconds = coarse.stage_seconds.evolve = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    } catch (const Error& e) {
+      if (e.code() == ErrorCode::Cancelled) throw;
+    } catch (const std::bad_alloc&) {
     }
+    if (kept != &coarse) coarse.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // The kept pass's warnings only (those of the plain pass were given as it ran).
+    if (kept == &coarse && options.warning)
+      for (const std::string& message : held)
+        if (std::find(given.begin(), given.end(), message) == given.end()) {
+          given.push_back(message);
+          options.warning(message.c_str());
+        }
+    // Both passes' time counts: a dropped or abandoned coarse pass's as evolution.
     const Result& other = kept == &coarse ? plain : coarse;
     kept->passes = 2;
     kept->seconds += other.seconds;
-    kept->stage_seconds.index += other.stage_seconds.index;
-    kept->stage_seconds.evolve += other.stage_seconds.evolve;
-    kept->stage_seconds.subdivide += other.stage_seconds.subdivide;
-    kept->stage_seconds.parameterize += other.stage_seconds.parameterize;
-    kept->stage_seconds.folds += other.stage_seconds.folds;
+    if (kept == &coarse) {
+      kept->stage_seconds.index += other.stage_seconds.index;
+      kept->stage_seconds.evolve += other.stage_seconds.evolve;
+      kept->stage_seconds.subdivide += other.stage_seconds.subdivide;
+      kept->stage_seconds.parameterize += other.stage_seconds.parameterize;
+      kept->stage_seconds.folds += other.stage_seconds.folds;
+    } else {
+      kept->stage_seconds.evolve += other.seconds;
+    }
   }
   if (options.progress && options.progress(1.0, "done")) fail(ErrorCode::Cancelled, "cancelled by the progress callback during \"done\"");
   return std::move(*kept);

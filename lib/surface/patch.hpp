@@ -23,7 +23,7 @@ struct Patch {
   double mean_distance = 0.0;          // of the subcloud to the surface
   double max_distance = 0.0;
   int iterations = 0;                  // grid evolutions
-  bool far_above = false;              // its error at a grid was above EvolveSettings::far_above times the target (and it stopped there with stop_when_far)
+  bool far_above = false;              // its error at a grid (of its evolution or, for the root, of a restart's) was above EvolveSettings::far_above times the target
   int restarts = 0;                    // evolutions from other starts tried (the root's, see evolve_patch_with_restart)
   std::size_t damped_nodes = 0;        // grid nodes the pleat guard held back, summed over them
   std::size_t refined_curves = 0;      // grid sections the Ceres solver refined
