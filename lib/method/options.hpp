@@ -79,7 +79,6 @@ struct Options {
   std::function<void(const char* stage, unsigned long long units)> work_probe;
   /// For tests: a patch's rays see at most about this many of its points (ray_cloud.hpp).
   std::size_t max_ray_points = kMaxRayPoints;
-
 };
 
 /// Option identifiers; values equal the DBS_OPT_* numbers of the C API.

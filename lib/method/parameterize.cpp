@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <chrono>
-#include <new>
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <new>
 #include <numeric>
 #include <string>
 
@@ -924,10 +924,6 @@ class Driver {
   PointList kept_;                 // the body less the cropped points, increasing
   std::size_t body_points_ = 0;    // body_.body's size (the list itself is dropped when it is every point)
 };
-
-}  // namespace
-
-namespace {
 
 /// `options` for one pass of parameterize(): its progress reported from `begin` on (the
 /// fraction f of the pass as begin + (1 - begin) f; a pass's own "done" is not passed on, the
