@@ -79,6 +79,18 @@ double level_progress_end(int level) { return kIndexEnd + (kLevelsEnd - kIndexEn
 /// Thrown by the coarse pass where it gives up (Driver).
 struct CoarsePassAbandoned {};
 
+/// The mean error of the patches of `level` among `patches`, each weighted by its points (0
+/// without any).
+double level_error(const std::vector<Patch>& patches, int level) {
+  double sum = 0.0, count = 0.0;
+  for (const Patch& p : patches)
+    if (p.level == level) {
+      sum += p.error * static_cast<double>(p.point_count);
+      count += static_cast<double>(p.point_count);
+    }
+  return count > 0.0 ? sum / count : 0.0;
+}
+
 class Driver {
  public:
   /// `coarse`: the coarse pass (parameterize.hpp): the root stops growing its grid far above the
@@ -322,22 +334,14 @@ class Driver {
       if (root) evolve_patch_with_restart(patch, points_, *projectors[k], own);
       else evolve_patch(patch, points_, *projectors[k], own);
     });
+    // The coarse pass gives up when its children fit worse than the plain pass's did (a coarse
+    // root that left a feature unreached: the mushroom's cap).
     if (level == 1) {
-      // The level's error, each patch weighted by its points: the plain pass keeps it, and the
-      // coarse pass gives up here when its children fit worse than the plain pass's did (a
-      // coarse root that left a feature unreached: the mushroom's cap).
-      double sum = 0.0, count = 0.0;
-      for (int id : ids) {
-        const Patch& p = result_.patches[id];
-        sum += p.error * static_cast<double>(p.point_count);
-        count += static_cast<double>(p.point_count);
-      }
-      result_.first_level_error = count > 0.0 ? sum / count : 0.0;
+      result_.first_level_error = level_error(result_.patches, 1);
       if (result_.coarse && result_.first_level_error > plain_first_level_error_) throw CoarsePassAbandoned{};
     }
     for (int id : ids) {
       const Patch& p = result_.patches[id];
-      if (p.parent < 0) result_.root_far_above = p.far_above;
       result_.iterations += p.iterations;
       result_.refined_curves += p.refined_curves;
       result_.ceres_iterations += p.ceres_iterations;
@@ -960,7 +964,7 @@ Result parameterize(const PointCloud& cloud, const Boundary& boundary, const Opt
   Result plain = Driver(cloud, boundary, pass_options(options, 0.0, &last, given), false).run();
   // The coarse pass only where the plain one pleated: its root ended far above the target (and
   // was subdivided) and a share of the points lies on turned sheets.
-  const bool pleated = options.coarse_pass != 0 && plain.root_far_above && plain.levels > 1 && plain.turned_share > kCoarseTurnedShare;
+  const bool pleated = options.coarse_pass != 0 && plain.patches.at(0).far_above && plain.levels > 1 && plain.turned_share > kCoarseTurnedShare;
   Result* kept = &plain;
   Result coarse;
   if (pleated) {
@@ -990,15 +994,8 @@ Result parameterize(const PointCloud& cloud, const Boundary& boundary, const Opt
     const Result& other = kept == &coarse ? plain : coarse;
     kept->passes = 2;
     kept->seconds += other.seconds;
-    if (kept == &coarse) {
-      kept->stage_seconds.index += other.stage_seconds.index;
-      kept->stage_seconds.evolve += other.stage_seconds.evolve;
-      kept->stage_seconds.subdivide += other.stage_seconds.subdivide;
-      kept->stage_seconds.parameterize += other.stage_seconds.parameterize;
-      kept->stage_seconds.folds += other.stage_seconds.folds;
-    } else {
-      kept->stage_seconds.evolve += other.seconds;
-    }
+    if (kept == &coarse) kept->stage_seconds += other.stage_seconds;
+    else kept->stage_seconds.evolve += other.seconds;
   }
   if (options.progress && options.progress(1.0, "done")) fail(ErrorCode::Cancelled, "cancelled by the progress callback during \"done\"");
   return std::move(*kept);

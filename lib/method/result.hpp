@@ -52,8 +52,10 @@ struct Result {
   /// plain one; `coarse` says that this result is the coarse pass's.
   int passes = 1;
   bool coarse = false;
-  bool root_far_above = false;  // the root's error at a grid was above kCoarseStop times the target
-  double first_level_error = 0.0;  // the mean error of the patches of level 1 (weighted by their points; 0 without them)
+  /// The points-weighted mean error of the level-1 patches when they were evolved (0 without
+  /// any; a leaf's error changes afterwards with its projection and repair): the coarse pass's
+  /// first level is compared with the plain pass's on it.
+  double first_level_error = 0.0;
   int levels = 0;             // quadtree levels present (1 = root only)
   int iterations = 0;         // grid evolutions over all patches
   int solver = 0;             // the solver that ran (Solver: 0 linear, 1 Ceres)
@@ -82,6 +84,10 @@ struct Result {
   /// Wall-clock time of each stage (their sum is about `seconds`).
   struct StageSeconds {
     double index = 0.0, evolve = 0.0, subdivide = 0.0, parameterize = 0.0, folds = 0.0;
+    StageSeconds& operator+=(const StageSeconds& o) {
+      index += o.index, evolve += o.evolve, subdivide += o.subdivide, parameterize += o.parameterize, folds += o.folds;
+      return *this;
+    }
   } stage_seconds;
 
   /// Whether point i is left out of the statistics and the validation: far outside the

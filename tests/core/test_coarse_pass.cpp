@@ -56,7 +56,7 @@ void tall_dome_keeps_the_coarse_pass(void**) {
               coarse.result.coarse ? 1 : 0);
   assert_int_equal(plain.result.passes, 1);
   assert_false(plain.result.coarse);
-  assert_true(plain.result.root_far_above);
+  assert_true(plain.result.patches.at(0).far_above);
   assert_true(plain.result.turned_share > dbs::kCoarseTurnedShare);
   assert_int_equal(coarse.result.passes, 2);
   assert_true(coarse.result.coarse);
@@ -131,7 +131,7 @@ void unpleated_runs_once(void**) {
   const Run plain = run(shape, 0);
   const Run coarse = run(shape, 1);
   // Far above the target at its root, but few points on turned sheets.
-  assert_true(plain.result.root_far_above);
+  assert_true(plain.result.patches.at(0).far_above);
   assert_true(plain.result.turned_share <= dbs::kCoarseTurnedShare);
   assert_int_equal(coarse.result.passes, 1);
   assert_false(coarse.result.coarse);
