@@ -18,7 +18,7 @@
 // needs no truth (DBS_STAT_TURNED_*). The bench repeats the library's "on the surface" rule
 // (beyond_repair_reach) from the statistics, as it sees the C API only.
 //
-// usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--smooth-turned 0|1] [--coarse-pass 0|1] [--solver linear|ceres] [--density F] [--noise F] [--save DIR]
+// usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--smooth-turned 0|1] [--coarse-pass 0|1|2] [--solver linear|ceres] [--density F] [--noise F] [--save DIR]
 // --noise F adds Gaussian noise along the normal, sigma F times the diagonal (a noisy shape
 // keeps its own where larger): the hard shapes as a scanner sees them.
 #include <algorithm>
@@ -43,7 +43,7 @@ using dbs_folds::FoldCount;
 using dbs_folds::FoldShape;
 
 [[noreturn]] void usage_error(const std::string& message) {
-  std::fprintf(stderr, "dbs-bench-folds: %s\nusage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--smooth-turned 0|1] [--coarse-pass 0|1] [--solver linear|ceres] [--density F] [--noise F] [--save DIR]\nshapes:", message.c_str());
+  std::fprintf(stderr, "dbs-bench-folds: %s\nusage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--smooth-turned 0|1] [--coarse-pass 0|1|2] [--solver linear|ceres] [--density F] [--noise F] [--save DIR]\nshapes:", message.c_str());
   for (const std::string& name : dbs_folds::fold_shape_names()) std::fprintf(stderr, " %s", name.c_str());
   std::fprintf(stderr, "\n");
   std::exit(2);
@@ -307,7 +307,7 @@ int main(int argc, char** argv) {
   dbs_options_get_double(options, DBS_OPT_RELATIVE_ACCURACY, &relative_accuracy);
 
   std::printf("libdbs %s, max level %d, relative accuracy %g, threads %s, repair %s, smoothing of turned sheets %s, coarse pass %s, solver %s, noise %g of the diagonal\n", dbs_version_string(), max_level, relative_accuracy,
-              threads == 0 ? "all" : std::to_string(threads).c_str(), repair ? "on" : "off", smooth_turned ? "on" : "off", coarse_pass ? "on" : "off", solver == DBS_SOLVER_CERES ? "ceres" : "linear", settings.noise);
+              threads == 0 ? "all" : std::to_string(threads).c_str(), repair ? "on" : "off", smooth_turned ? "on" : "off", coarse_pass == 0 ? "off" : coarse_pass == 2 ? "on, fit first" : "on, folds first", solver == DBS_SOLVER_CERES ? "ceres" : "linear", settings.noise);
   std::printf("folds: reference triangles whose signed (u,v) area is negative or below 1e-3 of the median, as inverted+collapsed;\n"
               "to truth: mean distance of the result surface at each point's (u,v) to the noise-free surface;\n"
               "turned: points on the result surface where its normal Su x Sv points against the noise-free surface's; ref.-free turned: the library's count;\n"

@@ -43,7 +43,7 @@ const OptionSpec kSpecs[] = {
     {{"crop", true, 0.0, 1.0}, false},
     {{"strict", true, 0.0, 1.0}, false},
     {{"smooth_turned", true, 0.0, 1.0}, false},
-    {{"coarse_pass", true, 0.0, 1.0}, false},
+    {{"coarse_pass", true, 0.0, 2.0}, false},
 };
 constexpr int kOptionCount = static_cast<int>(sizeof(kSpecs) / sizeof(kSpecs[0]));
 

@@ -26,6 +26,18 @@ constexpr double kCoarseStop = 20.0;
 /// ... and it runs when the plain pass's root got that far above and more than this share of
 /// the points judged lies on turned sheets.
 constexpr double kCoarseTurnedShare = 0.03;
+/// It is given up after its first level when that level's error is above this many times the
+/// plain pass's (fit first, Options::coarse_pass 2: above the plain pass's) ...
+constexpr double kCoarseAbandonRatio = 2.0;
+/// ... and its result, with fewer points on turned sheets, is kept when it fits as well (a mean
+/// distance at most the larger of the plain's and the target). Folds first (Options::coarse_pass
+/// 1), it must not have more points the fold measure cannot pass (folded or undecided), and
+/// may fit worse, within this factor of that, where the plain result is scrambled: more than
+/// kCoarseScrambleRatio times those points of the coarse one.
+constexpr double kCoarseFitSlack = 4.0;
+constexpr double kCoarseScrambleRatio = 2.0;
+/// Options::coarse_pass of the fit-first rule.
+constexpr int kCoarseFitFirst = 2;
 
 struct Options {
   double accuracy = 0.0;            // absolute mean-distance target; 0 = use relative_accuracy
@@ -51,8 +63,9 @@ struct Options {
   /// default.
   int smooth_turned = 0;
   /// 1: where the plain pass pleated (its root ended far above the target and turned sheets
-  /// hold a share of the points), a coarse pass runs too and the better is kept
-  /// (parameterize.hpp); 0: the plain pass only.
+  /// hold a share of the points), a coarse pass runs too and the better is kept, folds first
+  /// (kCoarseFitSlack); 2: likewise, fit first (kept only when it fits as well); 0: the plain
+  /// pass only.
   int coarse_pass = 1;
   /// The Ceres refinement (curve_refinement.hpp), used with Solver::Ceres only: the robust
   /// loss, its scale in cloud units (0 = derived from the cloud: 3 sigma of its estimated

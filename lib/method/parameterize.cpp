@@ -95,7 +95,8 @@ class Driver {
  public:
   /// `coarse`: the coarse pass (parameterize.hpp): the root stops growing its grid far above the
   /// target, and the pass is given up (CoarsePassAbandoned) when its first level's error is above
-  /// `plain_first_level_error`, the plain pass's.
+  /// `plain_first_level_error`, the plain pass's, times kCoarseAbandonRatio (folds first) or 1
+  /// (fit first).
   Driver(const PointCloud& cloud, const Boundary& boundary, const Options& options, bool coarse, double plain_first_level_error = 0.0)
       : points_(cloud.points()), boundary_(boundary), options_(options), progress_(options.progress), threads_(resolve_threads(options.threads)),
         plain_first_level_error_(plain_first_level_error) {
@@ -335,10 +336,11 @@ class Driver {
       else evolve_patch(patch, points_, *projectors[k], own);
     });
     // The coarse pass gives up when its children fit worse than the plain pass's did (a coarse
-    // root that left a feature unreached: the mushroom's cap).
+    // root that left a steep wall unreached), far worse when a worse fit may still be kept.
     if (level == 1) {
       result_.first_level_error = level_error(result_.patches, 1);
-      if (result_.coarse && result_.first_level_error > plain_first_level_error_) throw CoarsePassAbandoned{};
+      const double ratio = options_.coarse_pass == kCoarseFitFirst ? 1.0 : kCoarseAbandonRatio;
+      if (result_.coarse && result_.first_level_error > ratio * plain_first_level_error_) throw CoarsePassAbandoned{};
     }
     for (int id : ids) {
       const Patch& p = result_.patches[id];
@@ -955,6 +957,24 @@ Options pass_options(const Options& options, double begin, double* last, std::ve
   return pass;
 }
 
+/// The points of `result` the fold measure could not pass: folded or undecided.
+std::size_t doubted_points(const Result& result) { return result.folded_points + result.undecided_points; }
+
+/// Whether the coarse pass's result is kept (options.hpp): fewer points on turned sheets, and
+/// a fit as good as the plain pass's; folds first, no more points the fold measure doubts
+/// either, and a fit within kCoarseFitSlack of the plain pass's where the plain result is
+/// scrambled (an overhang the plain surfaces reached by pleating: the mushroom's cap, whose
+/// points they scatter in (u,v), where the coarse surfaces leave it to the repair).
+bool coarse_is_better(const Result& plain, const Result& coarse, bool folds_first) {
+  if (coarse.turned_points >= plain.turned_points) return false;
+  const double fit = std::max(plain.accuracy, plain.mean_distance);
+  if (!folds_first) return coarse.mean_distance <= fit;
+  if (doubted_points(coarse) > doubted_points(plain)) return false;
+  if (coarse.mean_distance <= fit) return true;
+  const bool scrambled = static_cast<double>(doubted_points(plain)) > kCoarseScrambleRatio * static_cast<double>(doubted_points(coarse));
+  return scrambled && coarse.mean_distance <= kCoarseFitSlack * fit;
+}
+
 }  // namespace
 
 Result parameterize(const PointCloud& cloud, const Boundary& boundary, const Options& options) {
@@ -976,7 +996,7 @@ Result parameterize(const PointCloud& cloud, const Boundary& boundary, const Opt
     second.strict = 0;
     try {
       coarse = Driver(cloud, boundary, second, true, plain.first_level_error).run();
-      if (coarse.mean_distance <= std::max(plain.accuracy, plain.mean_distance) && coarse.turned_points < plain.turned_points) kept = &coarse;
+      if (coarse_is_better(plain, coarse, options.coarse_pass != kCoarseFitFirst)) kept = &coarse;
     } catch (const CoarsePassAbandoned&) {
     } catch (const Error& e) {
       if (e.code() == ErrorCode::Cancelled) throw;

@@ -38,7 +38,7 @@ static const struct option_row kOptions[] = {
     {DBS_OPT_CROP, "crop", 1, 0, 0, 1, 1, -1, 2},
     {DBS_OPT_STRICT, "strict", 1, 0, 0, 1, 1, -1, 2},
     {DBS_OPT_SMOOTH_TURNED, "smooth_turned", 1, 0, 0, 1, 1, -1, 2},
-    {DBS_OPT_COARSE_PASS, "coarse_pass", 1, 1, 0, 1, 1, -1, 2},
+    {DBS_OPT_COARSE_PASS, "coarse_pass", 1, 1, 0, 2, 1, -1, 3},
 };
 #define OPTION_COUNT (sizeof kOptions / sizeof kOptions[0])
 

@@ -9,9 +9,16 @@
 //   callback during the second pass stops it;
 // - a shape that does not pleat (the 4,096-point tall dome: 2.7% turned) runs once, bit for bit
 //   the run without the option;
-// - where the coarse pass's first level fits worse than the first pass's (the 9,025-point
-//   mushroom, whose coarse root leaves the cap unreached), that pass is given up after level 0
-//   and the first result is kept, bit for bit.
+// - where the coarse pass's first level fits more than twice worse than the first pass's
+//   (the 7,744-point tall dome, whose coarse root leaves the wall unreached), that pass is
+//   given up after level 0 and the first result is kept, bit for bit;
+// - where the plain result is scrambled (the 8,649-point mushroom: the plain surfaces reach
+//   the cap by pleating and scatter its points in (u,v), 126 points the fold measure cannot
+//   pass against 15), the coarse result is kept although it fits worse (within
+//   kCoarseFitSlack): 23 -> 10 folded reference triangles; fit first (DBS_OPT_COARSE_PASS 2),
+//   the first result stands;
+// - a coarse result with more points on turned sheets (the 9,025-point mushroom) is dropped
+//   after its whole run, and the first result is kept, bit for bit.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -138,7 +145,59 @@ void unpleated_runs_once(void**) {
   assert_true(same_parameters(plain.result, coarse.result));
 }
 
-void worse_fit_keeps_the_first(void**) {
+/// The points the fold measure could not pass (folded or undecided).
+std::size_t doubted(const dbs::Result& r) { return r.folded_points + r.undecided_points; }
+
+void far_worse_first_level_gives_up(void**) {
+  const FoldShape shape = dbs_folds::fold_shape("tall-dome", 1.9);
+  const Run plain = run(shape, 0);
+  dbs::Options options;
+  std::vector<int> levels;
+  options.on_level = [&](int level, const std::vector<const dbs::Patch*>&) {
+    levels.push_back(level);
+    return false;
+  };
+  const Run r = run(shape, 1, 2, options);
+  std::printf("tall dome x1.9: passes %d, coarse %d, mean distance %.3g (target %.3g), %zu folded reference triangles\n", r.result.passes, r.result.coarse ? 1 : 0, r.result.mean_distance,
+              r.result.accuracy, r.folds);
+  assert_int_equal(r.result.passes, 2);
+  assert_false(r.result.coarse);
+  assert_true(same_parameters(plain.result, r.result));
+  assert_int_equal(plain.folds, r.folds);
+  // The second pass was given up after its first level: it reported level 0 only.
+  assert_int_equal(static_cast<int>(levels.size()), plain.result.levels + 1);
+  assert_int_equal(levels.back(), 0);
+}
+
+void scrambled_plain_keeps_the_coarse_pass(void**) {
+  const FoldShape shape = dbs_folds::fold_shape("mushroom", 2.1);
+  const Run plain = run(shape, 0);
+  const Run coarse = run(shape, 1);
+  std::printf("mushroom x2.1: %zu -> %zu folded reference triangles, %zu -> %zu doubted points, %zu -> %zu turned points, mean distance %.3g -> %.3g (target %.3g), coarse %d\n",
+              plain.folds, coarse.folds, doubted(plain.result), doubted(coarse.result), plain.result.turned_points, coarse.result.turned_points, plain.result.mean_distance,
+              coarse.result.mean_distance, coarse.result.accuracy, coarse.result.coarse ? 1 : 0);
+  assert_int_equal(coarse.result.passes, 2);
+  assert_true(coarse.result.coarse);
+  // Kept on the slack of a scrambled plain result: it fits worse than the plain one and the
+  // target, within kCoarseFitSlack, and the plain result has more than kCoarseScrambleRatio
+  // times its doubted points.
+  const double fit = std::max(plain.result.accuracy, plain.result.mean_distance);
+  assert_true(coarse.result.mean_distance > fit);
+  assert_true(coarse.result.mean_distance <= dbs::kCoarseFitSlack * fit);
+  assert_true(static_cast<double>(doubted(plain.result)) > dbs::kCoarseScrambleRatio * static_cast<double>(doubted(coarse.result)));
+  assert_true(coarse.result.turned_points < plain.result.turned_points);
+  // What it bought: half the folds or fewer.
+  assert_true(plain.folds >= 15);
+  assert_true(coarse.folds * 2 <= plain.folds);
+  // Fit first, the same second pass is given up after its first level, which fits worse than
+  // the plain pass's, and the plain result stands, bit for bit.
+  const Run fit_first = run(shape, dbs::kCoarseFitFirst);
+  assert_int_equal(fit_first.result.passes, 2);
+  assert_false(fit_first.result.coarse);
+  assert_true(same_parameters(plain.result, fit_first.result));
+}
+
+void more_turned_points_keep_the_first(void**) {
   const FoldShape shape = dbs_folds::fold_shape("mushroom", 2.2);
   const Run plain = run(shape, 0);
   dbs::Options options;
@@ -150,13 +209,14 @@ void worse_fit_keeps_the_first(void**) {
   const Run r = run(shape, 1, 2, options);
   std::printf("mushroom x2.2: passes %d, coarse %d, mean distance %.3g (target %.3g), %zu folded reference triangles\n", r.result.passes, r.result.coarse ? 1 : 0, r.result.mean_distance,
               r.result.accuracy, r.folds);
+  // The second pass ran to its end (its first level fit less than twice worse) and was
+  // dropped: the first result stands, bit for bit.
   assert_int_equal(r.result.passes, 2);
   assert_false(r.result.coarse);
   assert_true(same_parameters(plain.result, r.result));
   assert_int_equal(plain.folds, r.folds);
-  // The second pass was given up after its first level: it reported level 0 only.
-  assert_int_equal(static_cast<int>(levels.size()), plain.result.levels + 1);
-  assert_int_equal(levels.back(), 0);
+  assert_true(std::count(levels.begin(), levels.end(), 0) == 2);
+  assert_true(static_cast<int>(levels.size()) > plain.result.levels + 2);
 }
 
 }  // namespace
@@ -166,7 +226,9 @@ int main(void) {
       cmocka_unit_test(tall_dome_keeps_the_coarse_pass),
       cmocka_unit_test(callbacks_over_two_passes),
       cmocka_unit_test(unpleated_runs_once),
-      cmocka_unit_test(worse_fit_keeps_the_first),
+      cmocka_unit_test(far_worse_first_level_gives_up),
+      cmocka_unit_test(scrambled_plain_keeps_the_coarse_pass),
+      cmocka_unit_test(more_turned_points_keep_the_first),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
