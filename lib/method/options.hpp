@@ -20,25 +20,6 @@ using LevelFn = std::function<bool(int level, const std::vector<const Patch*>& p
 /// Warning observer: one line naming a likely mistake in the inputs (input_checks.hpp).
 using WarningFn = std::function<void(const char* message)>;
 
-/// The coarse pass (parameterize.hpp): its root stops growing its grid once its error is above
-/// this many times the target ...
-constexpr double kCoarseStop = 20.0;
-/// ... and it runs when the plain pass's root got that far above and more than this share of
-/// the points judged lies on turned sheets.
-constexpr double kCoarseTurnedShare = 0.03;
-/// It is given up after its first level when that level's error is above this many times the
-/// plain pass's (fit first, Options::coarse_pass 2: above the plain pass's) ...
-constexpr double kCoarseAbandonRatio = 2.0;
-/// ... and its result, with fewer points on turned sheets, is kept when it fits as well (a mean
-/// distance at most the larger of the plain's and the target). Folds first (Options::coarse_pass
-/// 1), it must not have more points the fold measure cannot pass (folded or undecided), and
-/// may fit worse, within this factor of that, where the plain result is scrambled: more than
-/// kCoarseScrambleRatio times those points of the coarse one.
-constexpr double kCoarseFitSlack = 4.0;
-constexpr double kCoarseScrambleRatio = 2.0;
-/// Options::coarse_pass of the fit-first rule.
-constexpr int kCoarseFitFirst = 2;
-
 struct Options {
   double accuracy = 0.0;            // absolute mean-distance target; 0 = use relative_accuracy
   double relative_accuracy = 1e-3;  // fraction of the cloud's box diagonal (CornerFrameBox)
@@ -62,10 +43,8 @@ struct Options {
   /// the one before and the target: fewer folds for more points on turned sheets, so off by
   /// default.
   int smooth_turned = 0;
-  /// 1: where the plain pass pleated (its root ended far above the target and turned sheets
-  /// hold a share of the points), a coarse pass runs too and the better is kept, folds first
-  /// (kCoarseFitSlack); 2: likewise, fit first (kept only when it fits as well); 0: the plain
-  /// pass only.
+  /// Where the plain pass pleated, a second pass from a coarse root, and the better result
+  /// kept (coarse_pass.hpp): 1 folds first, 2 fit first; 0: the plain pass only.
   int coarse_pass = 1;
   /// The Ceres refinement (curve_refinement.hpp), used with Solver::Ceres only: the robust
   /// loss, its scale in cloud units (0 = derived from the cloud: 3 sigma of its estimated

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cloud_index.hpp"
+#include "coarse_pass.hpp"
 #include "corner_frame.hpp"
 #include "error.hpp"
 #include "evolve.hpp"
@@ -93,10 +94,9 @@ double level_error(const std::vector<Patch>& patches, int level) {
 
 class Driver {
  public:
-  /// `coarse`: the coarse pass (parameterize.hpp): the root stops growing its grid far above the
+  /// `coarse`: the coarse pass (coarse_pass.hpp): the root stops growing its grid far above the
   /// target, and the pass is given up (CoarsePassAbandoned) when its first level's error is above
-  /// `plain_first_level_error`, the plain pass's, times kCoarseAbandonRatio (folds first) or 1
-  /// (fit first).
+  /// `plain_first_level_error`, the plain pass's, times coarse_abandon_ratio().
   Driver(const PointCloud& cloud, const Boundary& boundary, const Options& options, bool coarse, double plain_first_level_error = 0.0)
       : points_(cloud.points()), boundary_(boundary), options_(options), progress_(options.progress), threads_(resolve_threads(options.threads)),
         plain_first_level_error_(plain_first_level_error) {
@@ -336,11 +336,11 @@ class Driver {
       else evolve_patch(patch, points_, *projectors[k], own);
     });
     // The coarse pass gives up when its children fit worse than the plain pass's did (a coarse
-    // root that left a steep wall unreached), far worse when a worse fit may still be kept.
+    // root that left a steep wall unreached): folds first, kCoarseAbandonRatio times worse,
+    // since a worse fit may still be kept there (coarse_pass.hpp).
     if (level == 1) {
       result_.first_level_error = level_error(result_.patches, 1);
-      const double ratio = options_.coarse_pass == kCoarseFitFirst ? 1.0 : kCoarseAbandonRatio;
-      if (result_.coarse && result_.first_level_error > ratio * plain_first_level_error_) throw CoarsePassAbandoned{};
+      if (result_.coarse && result_.first_level_error > coarse_abandon_ratio(options_) * plain_first_level_error_) throw CoarsePassAbandoned{};
     }
     for (int id : ids) {
       const Patch& p = result_.patches[id];
@@ -957,24 +957,6 @@ Options pass_options(const Options& options, double begin, double* last, std::ve
   return pass;
 }
 
-/// The points of `result` the fold measure could not pass: folded or undecided.
-std::size_t doubted_points(const Result& result) { return result.folded_points + result.undecided_points; }
-
-/// Whether the coarse pass's result is kept (options.hpp): fewer points on turned sheets, and
-/// a fit as good as the plain pass's; folds first, no more points the fold measure doubts
-/// either, and a fit within kCoarseFitSlack of the plain pass's where the plain result is
-/// scrambled (an overhang the plain surfaces reached by pleating: the mushroom's cap, whose
-/// points they scatter in (u,v), where the coarse surfaces leave it to the repair).
-bool coarse_is_better(const Result& plain, const Result& coarse, bool folds_first) {
-  if (coarse.turned_points >= plain.turned_points) return false;
-  const double fit = std::max(plain.accuracy, plain.mean_distance);
-  if (!folds_first) return coarse.mean_distance <= fit;
-  if (doubted_points(coarse) > doubted_points(plain)) return false;
-  if (coarse.mean_distance <= fit) return true;
-  const bool scrambled = static_cast<double>(doubted_points(plain)) > kCoarseScrambleRatio * static_cast<double>(doubted_points(coarse));
-  return scrambled && coarse.mean_distance <= kCoarseFitSlack * fit;
-}
-
 }  // namespace
 
 Result parameterize(const PointCloud& cloud, const Boundary& boundary, const Options& options) {
@@ -984,7 +966,7 @@ Result parameterize(const PointCloud& cloud, const Boundary& boundary, const Opt
   Result plain = Driver(cloud, boundary, pass_options(options, 0.0, &last, given), false).run();
   // The coarse pass only where the plain one pleated: its root ended far above the target (and
   // was subdivided) and a share of the points lies on turned sheets.
-  const bool pleated = options.coarse_pass != 0 && plain.patches.at(0).far_above && plain.levels > 1 && plain.turned_share > kCoarseTurnedShare;
+  const bool pleated = coarse_pass_wanted(options, plain);
   Result* kept = &plain;
   Result coarse;
   if (pleated) {
@@ -996,7 +978,7 @@ Result parameterize(const PointCloud& cloud, const Boundary& boundary, const Opt
     second.strict = 0;
     try {
       coarse = Driver(cloud, boundary, second, true, plain.first_level_error).run();
-      if (coarse_is_better(plain, coarse, options.coarse_pass != kCoarseFitFirst)) kept = &coarse;
+      if (coarse_is_better(options, plain, coarse)) kept = &coarse;
     } catch (const CoarsePassAbandoned&) {
     } catch (const Error& e) {
       if (e.code() == ErrorCode::Cancelled) throw;

@@ -1,4 +1,4 @@
-// The coarse pass (DBS_OPT_COARSE_PASS, parameterize.hpp) on the hard shapes of
+// The coarse pass (DBS_OPT_COARSE_PASS, coarse_pass.hpp) on the hard shapes of
 // tests/support/fold_shapes, against a run without it:
 // - the 10,201-point tall dome: its root ends far above the target and 9% of its points lie on
 //   turned sheets, so the coarse pass runs and is kept: 90 folded reference triangles -> 7,
@@ -16,7 +16,10 @@
 //   the cap by pleating and scatter its points in (u,v), 126 points the fold measure cannot
 //   pass against 15), the coarse result is kept although it fits worse (within
 //   kCoarseFitSlack): 23 -> 10 folded reference triangles; fit first (DBS_OPT_COARSE_PASS 2),
-//   the first result stands;
+//   its second pass is given up after level 0 and the first result stands;
+// - folds first refuses a coarse result with more points the fold measure cannot pass (the
+//   4,489-point tall dome: 120 against 12, 6 folded reference triangles against 2), which fit
+//   first keeps for its fit (3.7 -> 0.97 times the target);
 // - a coarse result with more points on turned sheets (the 9,025-point mushroom) is dropped
 //   after its whole run, and the first result is kept, bit for bit.
 #include <algorithm>
@@ -25,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "coarse_pass.hpp"
 #include "fold_shapes.hpp"
 #include "parameterize.hpp"
 #include "point_cloud.hpp"
@@ -48,6 +52,27 @@ Run run(const FoldShape& shape, int coarse_pass, int threads = 2, dbs::Options o
   Run r{dbs::parameterize(dbs::PointCloud(fold_runs::points_of(shape.xyz)), fold_runs::boundary_of(shape), options), 0};
   r.folds = fold_runs::reference_folds(shape, r.result);
   return r;
+}
+
+/// run() with the levels the level callback saw, in order, into `levels`.
+Run run_recording_levels(const FoldShape& shape, int coarse_pass, std::vector<int>& levels) {
+  dbs::Options options;
+  options.on_level = [&levels](int level, const std::vector<const dbs::Patch*>&) {
+    levels.push_back(level);
+    return false;
+  };
+  return run(shape, coarse_pass, 2, options);
+}
+
+/// Whether a second pass after `plain`'s was given up after its first level: the level
+/// callback saw the plain pass's levels and level 0 once more.
+bool given_up_after_level_0(const std::vector<int>& levels, const Run& plain) {
+  return static_cast<int>(levels.size()) == plain.result.levels + 1 && levels.back() == 0;
+}
+
+void print_run(const char* name, const Run& r) {
+  std::printf("%s: passes %d, coarse %d, mean distance %.3g (target %.3g), %zu folded reference triangles\n", name, r.result.passes, r.result.coarse ? 1 : 0, r.result.mean_distance,
+              r.result.accuracy, r.folds);
 }
 
 bool same_parameters(const dbs::Result& a, const dbs::Result& b) {
@@ -145,36 +170,24 @@ void unpleated_runs_once(void**) {
   assert_true(same_parameters(plain.result, coarse.result));
 }
 
-/// The points the fold measure could not pass (folded or undecided).
-std::size_t doubted(const dbs::Result& r) { return r.folded_points + r.undecided_points; }
-
 void far_worse_first_level_gives_up(void**) {
   const FoldShape shape = dbs_folds::fold_shape("tall-dome", 1.9);
   const Run plain = run(shape, 0);
-  dbs::Options options;
   std::vector<int> levels;
-  options.on_level = [&](int level, const std::vector<const dbs::Patch*>&) {
-    levels.push_back(level);
-    return false;
-  };
-  const Run r = run(shape, 1, 2, options);
-  std::printf("tall dome x1.9: passes %d, coarse %d, mean distance %.3g (target %.3g), %zu folded reference triangles\n", r.result.passes, r.result.coarse ? 1 : 0, r.result.mean_distance,
-              r.result.accuracy, r.folds);
+  const Run r = run_recording_levels(shape, 1, levels);
+  print_run("tall dome x1.9", r);
   assert_int_equal(r.result.passes, 2);
   assert_false(r.result.coarse);
   assert_true(same_parameters(plain.result, r.result));
-  assert_int_equal(plain.folds, r.folds);
-  // The second pass was given up after its first level: it reported level 0 only.
-  assert_int_equal(static_cast<int>(levels.size()), plain.result.levels + 1);
-  assert_int_equal(levels.back(), 0);
+  assert_true(given_up_after_level_0(levels, plain));
 }
 
 void scrambled_plain_keeps_the_coarse_pass(void**) {
   const FoldShape shape = dbs_folds::fold_shape("mushroom", 2.1);
   const Run plain = run(shape, 0);
   const Run coarse = run(shape, 1);
-  std::printf("mushroom x2.1: %zu -> %zu folded reference triangles, %zu -> %zu doubted points, %zu -> %zu turned points, mean distance %.3g -> %.3g (target %.3g), coarse %d\n",
-              plain.folds, coarse.folds, doubted(plain.result), doubted(coarse.result), plain.result.turned_points, coarse.result.turned_points, plain.result.mean_distance,
+  std::printf("mushroom x2.1: %zu -> %zu folded reference triangles, %zu -> %zu points the fold measure cannot pass, %zu -> %zu turned points, mean distance %.3g -> %.3g (target %.3g), coarse %d\n",
+              plain.folds, coarse.folds, dbs::unpassed_points(plain.result), dbs::unpassed_points(coarse.result), plain.result.turned_points, coarse.result.turned_points, plain.result.mean_distance,
               coarse.result.mean_distance, coarse.result.accuracy, coarse.result.coarse ? 1 : 0);
   assert_int_equal(coarse.result.passes, 2);
   assert_true(coarse.result.coarse);
@@ -184,38 +197,57 @@ void scrambled_plain_keeps_the_coarse_pass(void**) {
   const double fit = std::max(plain.result.accuracy, plain.result.mean_distance);
   assert_true(coarse.result.mean_distance > fit);
   assert_true(coarse.result.mean_distance <= dbs::kCoarseFitSlack * fit);
-  assert_true(static_cast<double>(doubted(plain.result)) > dbs::kCoarseScrambleRatio * static_cast<double>(doubted(coarse.result)));
+  assert_true(static_cast<double>(dbs::unpassed_points(plain.result)) > dbs::kCoarseScrambleRatio * static_cast<double>(dbs::unpassed_points(coarse.result)));
   assert_true(coarse.result.turned_points < plain.result.turned_points);
   // What it bought: half the folds or fewer.
   assert_true(plain.folds >= 15);
   assert_true(coarse.folds * 2 <= plain.folds);
   // Fit first, the same second pass is given up after its first level, which fits worse than
-  // the plain pass's, and the plain result stands, bit for bit.
-  const Run fit_first = run(shape, dbs::kCoarseFitFirst);
+  // the plain pass's (but not twice worse), and the plain result stands, bit for bit.
+  assert_true(coarse.result.first_level_error > plain.result.first_level_error);
+  assert_true(coarse.result.first_level_error <= dbs::kCoarseAbandonRatio * plain.result.first_level_error);
+  std::vector<int> levels;
+  const Run fit_first = run_recording_levels(shape, dbs::kCoarseFitFirst, levels);
   assert_int_equal(fit_first.result.passes, 2);
   assert_false(fit_first.result.coarse);
   assert_true(same_parameters(plain.result, fit_first.result));
+  assert_true(given_up_after_level_0(levels, plain));
+}
+
+void folds_first_refuses_more_unpassed_points(void**) {
+  const FoldShape shape = dbs_folds::fold_shape("tall-dome", 1.1);
+  const Run plain = run(shape, 0);
+  const Run folds_first = run(shape, dbs::kCoarseFoldsFirst);
+  const Run fit_first = run(shape, dbs::kCoarseFitFirst);
+  std::printf("tall dome x1.1: plain %zu folded reference triangles, %zu points the fold measure cannot pass, mean distance %.3g; coarse %zu, %zu, %.3g (target %.3g)\n", plain.folds,
+              dbs::unpassed_points(plain.result), plain.result.mean_distance, fit_first.folds, dbs::unpassed_points(fit_first.result), fit_first.result.mean_distance,
+              plain.result.accuracy);
+  // The coarse result fits better and has fewer points on turned sheets: fit first keeps it ...
+  assert_int_equal(fit_first.result.passes, 2);
+  assert_true(fit_first.result.coarse);
+  assert_true(fit_first.result.mean_distance <= plain.result.mean_distance);
+  assert_true(fit_first.result.turned_points < plain.result.turned_points);
+  // ... but it has more points the fold measure cannot pass, and more folds: folds first keeps
+  // the plain result, bit for bit.
+  assert_true(dbs::unpassed_points(fit_first.result) > dbs::unpassed_points(plain.result));
+  assert_true(fit_first.folds > plain.folds);
+  assert_int_equal(folds_first.result.passes, 2);
+  assert_false(folds_first.result.coarse);
+  assert_true(same_parameters(plain.result, folds_first.result));
 }
 
 void more_turned_points_keep_the_first(void**) {
   const FoldShape shape = dbs_folds::fold_shape("mushroom", 2.2);
   const Run plain = run(shape, 0);
-  dbs::Options options;
   std::vector<int> levels;
-  options.on_level = [&](int level, const std::vector<const dbs::Patch*>&) {
-    levels.push_back(level);
-    return false;
-  };
-  const Run r = run(shape, 1, 2, options);
-  std::printf("mushroom x2.2: passes %d, coarse %d, mean distance %.3g (target %.3g), %zu folded reference triangles\n", r.result.passes, r.result.coarse ? 1 : 0, r.result.mean_distance,
-              r.result.accuracy, r.folds);
+  const Run r = run_recording_levels(shape, 1, levels);
+  print_run("mushroom x2.2", r);
   // The second pass ran to its end (its first level fit less than twice worse) and was
   // dropped: the first result stands, bit for bit.
   assert_int_equal(r.result.passes, 2);
   assert_false(r.result.coarse);
   assert_true(same_parameters(plain.result, r.result));
-  assert_int_equal(plain.folds, r.folds);
-  assert_true(std::count(levels.begin(), levels.end(), 0) == 2);
+  assert_int_equal(std::count(levels.begin(), levels.end(), 0), 2);
   assert_true(static_cast<int>(levels.size()) > plain.result.levels + 2);
 }
 
@@ -229,6 +261,7 @@ int main(void) {
       cmocka_unit_test(far_worse_first_level_gives_up),
       cmocka_unit_test(scrambled_plain_keeps_the_coarse_pass),
       cmocka_unit_test(more_turned_points_keep_the_first),
+      cmocka_unit_test(folds_first_refuses_more_unpassed_points),
   };
   return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
