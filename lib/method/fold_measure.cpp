@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
-#include <queue>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -16,6 +15,7 @@
 #include "cloud_index.hpp"
 #include "error.hpp"
 #include "fold_local.hpp"
+#include "indexed_heap.hpp"
 #include "parallel.hpp"
 #include "torn_points.hpp"
 
@@ -244,8 +244,9 @@ void orient(const std::vector<Vec3>& points, const std::vector<double>& u, const
   out_orient.assign(n, 0);
   out_component.assign(n, kNoNeighbour);
   out_components = 0;
-  using Item = std::tuple<double, std::uint32_t, std::uint32_t>;  // weight, to, from
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+  // Each unoriented point's lightest edge from an oriented one (weight, then from): the
+  // edges in Prim's order, lightest first, ties by (to, from).
+  IndexedMinHeap heap(n);
   auto push_edges = [&](std::uint32_t from) {
     for (std::size_t e = start[from]; e < end[from]; ++e) {
       const std::uint32_t to = adjacent[e];
@@ -255,7 +256,7 @@ void orient(const std::vector<Vec3>& points, const std::vector<double>& u, const
       const double du = u[to] - u[from], dv = v[to] - v[from];
       const Vec3 d = points[to] - points[from];
       if (stretch > 0.0 && std::sqrt(du * du + dv * dv) > kTearRatio * stretch * d.norm()) w += kTornWeight;
-      heap.emplace(w, to, from);
+      heap.offer(to, w, from);
     }
   };
   for (std::size_t s = 0; s < n; ++s) {
@@ -265,10 +266,8 @@ void orient(const std::vector<Vec3>& points, const std::vector<double>& u, const
     out_component[s] = component;
     push_edges(static_cast<std::uint32_t>(s));
     while (!heap.empty()) {
-      const auto [w, to, from] = heap.top();
-      heap.pop();
-      (void)w;
-      if (out_orient[to] != 0) continue;
+      const IndexedMinHeap::Entry edge = heap.pop();
+      const std::uint32_t to = edge.id, from = edge.payload;
       const double agree = (static_cast<double>(out_orient[from]) * local[from].normal).dot(local[to].normal);
       out_orient[to] = agree >= 0.0 ? 1 : -1;
       out_component[to] = component;
