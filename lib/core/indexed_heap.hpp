@@ -2,9 +2,9 @@
 // made for it: the frontier of a best-first walk over a graph (Prim's order). It pops the
 // ids in the order a heap of every offer, (weight, id, payload) tuples popped in increasing
 // order with the stale ones (an id popped before) skipped, would give them, payloads
-// included, while holding one entry an id instead of one an edge: a walk that offers each
-// edge of a 20,000-point graph of 10 neighbours a point kept ten times as many entries and
-// spent most of its time in them.
+// included, while holding one entry an id instead of one an edge: a walk that pushed each
+// edge of a 20,000-point graph of 10 neighbours a point kept up to ten times as many entries
+// and spent most of its time in them.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -25,9 +25,9 @@ class IndexedMinHeap {
 
   bool empty() const { return heap_.empty(); }
 
-  /// Offers `id` with (weight, payload): kept when the id is not in the heap (or was popped:
-  /// the caller offers only ids it has not popped) or when (weight, payload) is below the
-  /// pair it holds.
+  /// Offers `id` with (weight, payload): kept when the id is not in the heap or when
+  /// (weight, payload) is below the pair it holds. Within one walk the caller never offers an
+  /// id it has popped (the heap would take it as new); an emptied heap may serve another walk.
   void offer(std::uint32_t id, double weight, std::uint32_t payload) {
     std::uint32_t at = position_[id];
     if (at == kAbsent) {

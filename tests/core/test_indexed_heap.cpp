@@ -7,6 +7,7 @@
 #include <queue>
 #include <random>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "indexed_heap.hpp"
@@ -137,7 +138,7 @@ void keeps_the_least_offer_of_an_id(void**) {
   assert_int_equal(e.payload, 3);
   assert_true(e.weight == 0.5);
   assert_true(heap.empty());
-  // A popped id may be offered again (a new walk) and comes back.
+  // An emptied heap serves another walk: an id popped in the first is offered anew and comes back.
   heap.offer(3, 2.0, 0);
   assert_false(heap.empty());
   assert_int_equal(heap.pop().id, 3);
