@@ -2,9 +2,9 @@
 // made for it: the frontier of a best-first walk over a graph (Prim's order). It pops the
 // ids in the order a heap of every offer, (weight, id, payload) tuples popped in increasing
 // order with the stale ones (an id popped before) skipped, would give them, payloads
-// included, while holding one entry an id instead of one an edge: a walk that pushed each
-// edge of a 20,000-point graph of 10 neighbours a point kept up to ten times as many entries
-// and spent most of its time in them.
+// included, while holding one entry an id instead of one an edge (a walk that pushed each
+// edge of a graph of 10 neighbours a point held up to ten times as many, most of them stale;
+// with it the folds stage of the 10,201-point mushroom fell from 0.25 to 0.21 s).
 #pragma once
 #include <cstddef>
 #include <cstdint>
