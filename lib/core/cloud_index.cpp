@@ -8,6 +8,10 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <mutex>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 #include <string>
 #include <utility>
 
@@ -104,9 +108,14 @@ struct RayBoxBound {
   }
 
   /// The point test on d = x - p.
-  bool holds(const Vec3& d) const {
-    const Vec3 scaled = d * scale;
-    return scaled.squaredNorm() * scaled.cross(u).squaredNorm() <= scaled_bound2;
+  bool holds(const Vec3& d) const { return holds(d.x(), d.y(), d.z()); }
+  /// The same on d's coordinates, written out: the leaves' column scan (LeafColumns::scan)
+  /// runs this very arithmetic on two points at once, so both give the same answers.
+  bool holds(double dx, double dy, double dz) const { return point_test(dx, dy, dz, scale, u.x(), u.y(), u.z(), scaled_bound2); }
+  static bool point_test(double dx, double dy, double dz, double scale, double ux, double uy, double uz, double bound2) {
+    const double sx = dx * scale, sy = dy * scale, sz = dz * scale;
+    const double cx = sy * uz - sz * uy, cy = sz * ux - sx * uz, cz = sx * uy - sy * ux;
+    return (sx * sx + sy * sy + sz * sz) * (cx * cx + cy * cy + cz * cz) <= bound2;
   }
 
   /// Whether the box [lo, hi] may hold a point that holds(): false once r rho > bound for
@@ -137,6 +146,55 @@ struct RayBoxBound {
   }
 };
 
+/// A chunk's points in the order of its tree's leaves (the permutation vAcc), as columns of
+/// coordinates beside their point numbers: a leaf of the ray query is then a contiguous run
+/// of each column, tested a few points at a time, instead of two indirections a point.
+class LeafColumns {
+ public:
+  void resize(std::size_t n) {
+    x_.resize(n);
+    y_.resize(n);
+    z_.resize(n);
+    id_.resize(n);
+  }
+  void set(std::size_t k, std::uint32_t id, const Vec3& point) {
+    x_[k] = point.x();
+    y_[k] = point.y();
+    z_[k] = point.z();
+    id_[k] = id;
+  }
+  /// Appends to `out` the points among [begin, end) that query.holds(), in that order.
+  void scan(std::size_t begin, std::size_t end, const RayBoxBound& query, std::vector<std::size_t>& out) const {
+    std::size_t k = begin;
+#ifdef __SSE2__
+    // Two points at a time, with the operations of point_test in the same order (no fused
+    // multiply-add on baseline x86-64): the same answer for each point, bit for bit.
+    const __m128d px = _mm_set1_pd(query.p.x()), py = _mm_set1_pd(query.p.y()), pz = _mm_set1_pd(query.p.z());
+    const __m128d ux = _mm_set1_pd(query.u.x()), uy = _mm_set1_pd(query.u.y()), uz = _mm_set1_pd(query.u.z());
+    const __m128d scale = _mm_set1_pd(query.scale), bound2 = _mm_set1_pd(query.scaled_bound2);
+    for (; k + 2 <= end; k += 2) {
+      const __m128d sx = _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(&x_[k]), px), scale);
+      const __m128d sy = _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(&y_[k]), py), scale);
+      const __m128d sz = _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(&z_[k]), pz), scale);
+      const __m128d cx = _mm_sub_pd(_mm_mul_pd(sy, uz), _mm_mul_pd(sz, uy));
+      const __m128d cy = _mm_sub_pd(_mm_mul_pd(sz, ux), _mm_mul_pd(sx, uz));
+      const __m128d cz = _mm_sub_pd(_mm_mul_pd(sx, uy), _mm_mul_pd(sy, ux));
+      const __m128d r2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(sx, sx), _mm_mul_pd(sy, sy)), _mm_mul_pd(sz, sz));
+      const __m128d rho2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(cx, cx), _mm_mul_pd(cy, cy)), _mm_mul_pd(cz, cz));
+      const int kept = _mm_movemask_pd(_mm_cmple_pd(_mm_mul_pd(r2, rho2), bound2));
+      if (kept & 1) out.push_back(id_[k]);
+      if (kept & 2) out.push_back(id_[k + 1]);
+    }
+#endif
+    for (; k < end; ++k)
+      if (query.holds(x_[k] - query.p.x(), y_[k] - query.p.y(), z_[k] - query.p.z())) out.push_back(id_[k]);
+  }
+
+ private:
+  std::vector<double> x_, y_, z_;
+  std::vector<std::uint32_t> id_;
+};
+
 /// A nanoflann KNN result set shared by the trees of a forest: each tree reports its own
 /// point numbers, which become positions in the forest's slots (the chunk's first slot
 /// added), so one set keeps the k nearest over every tree and prunes with the best so far.
@@ -161,16 +219,28 @@ struct CloudIndex::Impl {
     std::unique_ptr<Tree> tree;
     std::uint32_t first_slot = 0;
     Vec3 lo, hi;  // the tree's root box
+    /// The chunk's points in the tree's leaf order, for the ray queries (made by the first).
+    mutable LeafColumns columns;
+    mutable std::once_flag columns_made;
 
     const Tree::Node* root() const { return tree->DBS_NANOFLANN_MEMBER(root_node); }
+    const LeafColumns& leaf_columns(const std::vector<Vec3>& points) const {
+      std::call_once(columns_made, [&] {
+        const auto& order = tree->DBS_NANOFLANN_MEMBER(vAcc);
+        columns.resize(order.size());
+        for (std::size_t k = 0; k < order.size(); ++k) columns.set(k, static_cast<std::uint32_t>(dataset.map(order[k])), points[dataset.map(order[k])]);
+      });
+      return columns;
+    }
   };
 
   const std::vector<Vec3>& points;
   std::vector<std::uint32_t> subset;  // point_index order; empty for the whole cloud
   std::vector<std::uint32_t> slots;   // the indexed points, chunk after chunk
   std::vector<std::unique_ptr<Chunk>> chunks;
+  std::size_t column_points;  // IndexBuild::column_points
 
-  Impl(const std::vector<Vec3>& pts, std::vector<std::uint32_t> sub, bool whole_cloud, const IndexBuild& build) : points(pts), subset(std::move(sub)) {
+  Impl(const std::vector<Vec3>& pts, std::vector<std::uint32_t> sub, bool whole_cloud, const IndexBuild& build) : points(pts), subset(std::move(sub)), column_points(build.column_points) {
     if (whole_cloud) {
       slots.resize(points.size());
       for (std::size_t k = 0; k < slots.size(); ++k) slots[k] = static_cast<std::uint32_t>(k);
@@ -210,9 +280,15 @@ struct CloudIndex::Impl {
     return out;
   }
 
-  void collect_near_ray(const Chunk& chunk, const Tree::Node* node, Vec3 lo, Vec3 hi, const RayBoxBound& query, std::vector<std::size_t>& out) const {
-    if (!query.may_hold(lo, hi)) return;
+  /// `columns`: the chunk's LeafColumns, or null for an index above IndexBuild::column_points
+  /// points (its leaves' points are then read through the tree's permutation).
+  void collect_near_ray(const Chunk& chunk, const LeafColumns* columns, const Tree::Node* node, Vec3 lo, Vec3 hi, const RayBoxBound& query, std::vector<std::size_t>& out) const {
+    // A leaf is scanned without its box test: testing its few points costs about as much.
     if (node->child1 == nullptr && node->child2 == nullptr) {
+      if (columns) {
+        columns->scan(node->node_type.lr.left, node->node_type.lr.right, query, out);
+        return;
+      }
       const auto& local = chunk.tree->DBS_NANOFLANN_MEMBER(vAcc);
       for (std::size_t i = node->node_type.lr.left; i < node->node_type.lr.right; ++i) {
         const std::size_t index = chunk.dataset.map(local[i]);
@@ -220,12 +296,13 @@ struct CloudIndex::Impl {
       }
       return;
     }
+    if (!query.may_hold(lo, hi)) return;
     const int axis = node->node_type.sub.divfeat;
     Vec3 hi_low = hi, lo_high = lo;
     hi_low[axis] = node->node_type.sub.divlow;
     lo_high[axis] = node->node_type.sub.divhigh;
-    collect_near_ray(chunk, node->child1, lo, hi_low, query, out);
-    collect_near_ray(chunk, node->child2, lo_high, hi, query, out);
+    collect_near_ray(chunk, columns, node->child1, lo, hi_low, query, out);
+    collect_near_ray(chunk, columns, node->child2, lo_high, hi, query, out);
   }
 
   /// The k nearest over every chunk into `found`: the chunks nearest to q first, a chunk
@@ -332,7 +409,8 @@ void CloudIndex::near_ray(const Vec3& p, const Vec3& n, double bound, std::vecto
   const double length = n.norm();
   if (size() == 0 || !(length > 0.0)) return;
   const RayBoxBound query{p, n / length, bound};
-  for (const auto& chunk : impl_->chunks) impl_->collect_near_ray(*chunk, chunk->root(), chunk->lo, chunk->hi, query, out_idx);
+  const bool columns = size() <= impl_->column_points;
+  for (const auto& chunk : impl_->chunks) impl_->collect_near_ray(*chunk, columns ? &chunk->leaf_columns(impl_->points) : nullptr, chunk->root(), chunk->lo, chunk->hi, query, out_idx);
 }
 
 double cloud_spacing(const CloudIndex& index, std::size_t max_samples, int threads) {

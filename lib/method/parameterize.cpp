@@ -315,6 +315,7 @@ class Driver {
       expected += evolve_work(rays_see) + (id == 0 && !ray_clouds.back().sampled() ? 0 : index_build_work(rays_see));
     }
     begin_stage("evolve", begin, begin + 0.8 * (end - begin), expected);
+    auto will_split = [&](const Patch& p) { return !p.accurate && level < options_.max_level && p.point_count >= kMinPointsToSubdivide; };
     meter_.run(ids.size(), outer, [&](std::size_t k) {
       Patch& patch = result_.patches[ids[k]];
       const bool root = patch.parent < 0;
@@ -334,6 +335,12 @@ class Driver {
       }
       if (root) evolve_patch_with_restart(patch, points_, *projectors[k], own);
       else evolve_patch(patch, points_, *projectors[k], own);
+      // A leaf's index goes as soon as it is evolved, not with the level's: the level's other
+      // patches may still be evolving, and every index held adds to the peak of a large run.
+      if (!root && !will_split(patch)) {
+        projectors[k].reset();
+        indices[k].reset();
+      }
     });
     // The coarse pass gives up when its children fit worse than the plain pass's did (a coarse
     // root that left a steep wall unreached): folds first, kCoarseAbandonRatio times worse,
@@ -354,10 +361,11 @@ class Driver {
     std::vector<int> split;
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const Patch& p = result_.patches[ids[k]];
-      if (!p.accurate && level < options_.max_level && p.point_count >= kMinPointsToSubdivide) split.push_back(static_cast<int>(k));
+      if (will_split(p)) split.push_back(static_cast<int>(k));
     }
-    // A patch's index serves its evolution and its middle curves only: a leaf's goes now, a
-    // split patch's once its curves are made (the root's index is the whole cloud's).
+    // A patch's index serves its evolution and its middle curves only: a leaf's went after its
+    // evolution (the root's, the whole cloud's, goes now when the root is a leaf), a split
+    // patch's goes once its curves are made.
     auto release_index = [&](std::size_t k) {
       projectors[k].reset();
       indices[k].reset();
