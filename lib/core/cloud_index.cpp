@@ -219,7 +219,9 @@ struct CloudIndex::Impl {
     std::unique_ptr<Tree> tree;
     std::uint32_t first_slot = 0;
     Vec3 lo, hi;  // the tree's root box
-    /// The chunk's points in the tree's leaf order, for the ray queries (made by the first).
+    /// The chunk's points in the tree's leaf order, for the ray queries, made by the first one
+    /// (28 bytes a point; the rays of a patch see at most about kMaxRayPoints points of it,
+    /// ray_cloud.hpp, and the other queries never make them).
     mutable LeafColumns columns;
     mutable std::once_flag columns_made;
 
@@ -238,9 +240,8 @@ struct CloudIndex::Impl {
   std::vector<std::uint32_t> subset;  // point_index order; empty for the whole cloud
   std::vector<std::uint32_t> slots;   // the indexed points, chunk after chunk
   std::vector<std::unique_ptr<Chunk>> chunks;
-  std::size_t column_points;  // IndexBuild::column_points
 
-  Impl(const std::vector<Vec3>& pts, std::vector<std::uint32_t> sub, bool whole_cloud, const IndexBuild& build) : points(pts), subset(std::move(sub)), column_points(build.column_points) {
+  Impl(const std::vector<Vec3>& pts, std::vector<std::uint32_t> sub, bool whole_cloud, const IndexBuild& build) : points(pts), subset(std::move(sub)) {
     if (whole_cloud) {
       slots.resize(points.size());
       for (std::size_t k = 0; k < slots.size(); ++k) slots[k] = static_cast<std::uint32_t>(k);
@@ -280,20 +281,10 @@ struct CloudIndex::Impl {
     return out;
   }
 
-  /// `columns`: the chunk's LeafColumns, or null for an index above IndexBuild::column_points
-  /// points (its leaves' points are then read through the tree's permutation).
-  void collect_near_ray(const Chunk& chunk, const LeafColumns* columns, const Tree::Node* node, Vec3 lo, Vec3 hi, const RayBoxBound& query, std::vector<std::size_t>& out) const {
+  void collect_near_ray(const LeafColumns& columns, const Tree::Node* node, Vec3 lo, Vec3 hi, const RayBoxBound& query, std::vector<std::size_t>& out) const {
     // A leaf is scanned without its box test: testing its few points costs about as much.
     if (node->child1 == nullptr && node->child2 == nullptr) {
-      if (columns) {
-        columns->scan(node->node_type.lr.left, node->node_type.lr.right, query, out);
-        return;
-      }
-      const auto& local = chunk.tree->DBS_NANOFLANN_MEMBER(vAcc);
-      for (std::size_t i = node->node_type.lr.left; i < node->node_type.lr.right; ++i) {
-        const std::size_t index = chunk.dataset.map(local[i]);
-        if (query.holds(points[index] - query.p)) out.push_back(index);
-      }
+      columns.scan(node->node_type.lr.left, node->node_type.lr.right, query, out);
       return;
     }
     if (!query.may_hold(lo, hi)) return;
@@ -301,8 +292,8 @@ struct CloudIndex::Impl {
     Vec3 hi_low = hi, lo_high = lo;
     hi_low[axis] = node->node_type.sub.divlow;
     lo_high[axis] = node->node_type.sub.divhigh;
-    collect_near_ray(chunk, columns, node->child1, lo, hi_low, query, out);
-    collect_near_ray(chunk, columns, node->child2, lo_high, hi, query, out);
+    collect_near_ray(columns, node->child1, lo, hi_low, query, out);
+    collect_near_ray(columns, node->child2, lo_high, hi, query, out);
   }
 
   /// The k nearest over every chunk into `found`: the chunks nearest to q first, a chunk
@@ -409,8 +400,7 @@ void CloudIndex::near_ray(const Vec3& p, const Vec3& n, double bound, std::vecto
   const double length = n.norm();
   if (size() == 0 || !(length > 0.0)) return;
   const RayBoxBound query{p, n / length, bound};
-  const bool columns = size() <= impl_->column_points;
-  for (const auto& chunk : impl_->chunks) impl_->collect_near_ray(*chunk, columns ? &chunk->leaf_columns(impl_->points) : nullptr, chunk->root(), chunk->lo, chunk->hi, query, out_idx);
+  for (const auto& chunk : impl_->chunks) impl_->collect_near_ray(chunk->leaf_columns(impl_->points), chunk->root(), chunk->lo, chunk->hi, query, out_idx);
 }
 
 double cloud_spacing(const CloudIndex& index, std::size_t max_samples, int threads) {

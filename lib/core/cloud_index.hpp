@@ -19,18 +19,11 @@ class WorkMeter;
 /// How an index is built: on how many threads, counting its work (one unit per
 /// kPointsPerIndexUnit points of a pass) on an optional meter, in chunks of at most
 /// chunk_points points (smaller than the default in tests only: the answers are the same).
-/// Ray queries (near_ray) on an index of at most column_points points read its points from
-/// columns in the trees' leaf order, made by the first query (28 bytes a point: a patch's rays
-/// see at most about kMaxRayPoints points, ray_cloud.hpp); on a larger index they read the
-/// points in place (the few rays of a middle curve on a large subcloud). The same answers
-/// either way (tests set column_points 0 to compare).
 struct IndexBuild {
   static constexpr std::size_t kDefaultChunkPoints = std::size_t{1} << 16;
-  static constexpr std::size_t kDefaultColumnPoints = std::size_t{1} << 16;
   int threads = 1;
   WorkMeter* meter = nullptr;
   std::size_t chunk_points = kDefaultChunkPoints;
-  std::size_t column_points = kDefaultColumnPoints;
 };
 
 /// The units of work IndexBuild counts for an index of n points: exact when every halving
