@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -220,19 +221,28 @@ struct CloudIndex::Impl {
     std::uint32_t first_slot = 0;
     Vec3 lo, hi;  // the tree's root box
     /// The chunk's points in the tree's leaf order, for the ray queries, made by the first one
-    /// (28 bytes a point; the rays of a patch see at most about kMaxRayPoints points of it,
-    /// ray_cloud.hpp, and the other queries never make them).
-    mutable LeafColumns columns;
-    mutable std::once_flag columns_made;
+    /// (28 bytes a point; only indexes rays are cast on make them) and freed by
+    /// release_ray_columns: `columns` is set once they are whole, under `columns_mutex`.
+    mutable std::unique_ptr<LeafColumns> owned_columns;
+    mutable std::atomic<const LeafColumns*> columns{nullptr};
+    mutable std::mutex columns_mutex;
 
     const Tree::Node* root() const { return tree->DBS_NANOFLANN_MEMBER(root_node); }
     const LeafColumns& leaf_columns(const std::vector<Vec3>& points) const {
-      std::call_once(columns_made, [&] {
-        const auto& order = tree->DBS_NANOFLANN_MEMBER(vAcc);
-        columns.resize(order.size());
-        for (std::size_t k = 0; k < order.size(); ++k) columns.set(k, static_cast<std::uint32_t>(dataset.map(order[k])), points[dataset.map(order[k])]);
-      });
-      return columns;
+      if (const LeafColumns* made = columns.load(std::memory_order_acquire)) return *made;
+      std::lock_guard<std::mutex> lock(columns_mutex);
+      if (const LeafColumns* made = columns.load(std::memory_order_relaxed)) return *made;
+      const auto& order = tree->DBS_NANOFLANN_MEMBER(vAcc);
+      auto made = std::make_unique<LeafColumns>();
+      made->resize(order.size());
+      for (std::size_t k = 0; k < order.size(); ++k) made->set(k, static_cast<std::uint32_t>(dataset.map(order[k])), points[dataset.map(order[k])]);
+      owned_columns = std::move(made);
+      columns.store(owned_columns.get(), std::memory_order_release);
+      return *owned_columns;
+    }
+    void release_columns() {
+      columns.store(nullptr, std::memory_order_relaxed);
+      owned_columns.reset();
     }
   };
 
@@ -401,6 +411,10 @@ void CloudIndex::near_ray(const Vec3& p, const Vec3& n, double bound, std::vecto
   if (size() == 0 || !(length > 0.0)) return;
   const RayBoxBound query{p, n / length, bound};
   for (const auto& chunk : impl_->chunks) impl_->collect_near_ray(chunk->leaf_columns(impl_->points), chunk->root(), chunk->lo, chunk->hi, query, out_idx);
+}
+
+void CloudIndex::release_ray_columns() {
+  for (const auto& chunk : impl_->chunks) chunk->release_columns();
 }
 
 double cloud_spacing(const CloudIndex& index, std::size_t max_samples, int threads) {

@@ -57,10 +57,15 @@ class CloudIndex {
   /// All indexed points x with |x - p| * dist(x, line) <= bound, where line is the whole
   /// line through p along n (n != 0, need not be unit) and bound has the dimension of an
   /// area: the region where the weight of eq. (5) can exceed a threshold (see
-  /// DirectedProjector). A dedicated k-d tree descent prunes every node whose box cannot
-  /// hold such a point, so the cost follows the region, not the cloud. Unordered but
-  /// deterministic; appended to out_idx after clearing.
+  /// DirectedProjector). A dedicated k-d tree descent prunes every inner node whose box
+  /// cannot hold such a point and tests every point of the leaves it reaches, so the cost
+  /// follows the region, not the cloud. Unordered but deterministic; appended to out_idx
+  /// after clearing. The first ray query copies the points into columns in the trees' leaf
+  /// order (28 bytes a point), which later ones read.
   void near_ray(const Vec3& p, const Vec3& n, double bound, std::vector<std::size_t>& out_idx) const;
+  /// Frees the columns near_ray made (the next ray query makes them again): for an index kept
+  /// for a few more rays while others are made. Not while another thread queries the index.
+  void release_ray_columns();
 
  private:
   struct Impl;

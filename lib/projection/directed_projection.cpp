@@ -24,9 +24,13 @@ class MomentSum {
  public:
   MomentSum(const Vec3& p, const Vec3& unit_n, double h) : p_(p), u_(unit_n), inv_h_(1.0 / h) {}
 
+  /// Eq. (5)'s weight of x, the operations written out in the order add_all's SSE2 code
+  /// takes them (Eigen's own sums of three squares run in another order where it does not
+  /// vectorize).
   void add(const Vec3& x) {
-    const Vec3 d = (x - p_) * inv_h_;
-    accumulate(1.0 / (1.0 + d.squaredNorm() * d.cross(u_).squaredNorm()), x);
+    const double dx = (x.x() - p_.x()) * inv_h_, dy = (x.y() - p_.y()) * inv_h_, dz = (x.z() - p_.z()) * inv_h_;
+    const double cx = dy * u_.z() - dz * u_.y(), cy = dz * u_.x() - dx * u_.z(), cz = dx * u_.y() - dy * u_.x();
+    accumulate(1.0 / (1.0 + (dx * dx + dy * dy + dz * dz) * (cx * cx + cy * cy + cz * cz)), x);
   }
 
   /// x with its weight a.

@@ -219,6 +219,40 @@ void forest_does_not_depend_on_threads(void**) {
   }
 }
 
+void ray_neighbourhood_is_the_point_test_to_the_last_bit(void**) {
+  // near_ray tests two points at a time: its answer must be that of the point test written
+  // out (|d|^2 |d x u|^2 <= bound^2, the sums of squares taken x, y, then z; scaling by a
+  // power of two, as the query does, changes no comparison), also for a point whose product
+  // is the bound to within its last bits, which a test summing in another order misjudges.
+  const std::vector<Vec3> pts = random_cloud(3001, 14);
+  const CloudIndex index(pts);
+  std::mt19937 rng(15);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<std::size_t> got;
+  std::size_t edge_points = 0;
+  for (std::size_t q = 0; q < 3000; ++q) {
+    const Vec3 p(unit(rng), unit(rng), 0.5 * unit(rng));
+    const Vec3 n(unit(rng), unit(rng), unit(rng) + 2.0);
+    const Vec3 u = n / n.norm();  // as near_ray makes it unit
+    auto product = [&](const Vec3& x) {
+      const double dx = x.x() - p.x(), dy = x.y() - p.y(), dz = x.z() - p.z();
+      const double cx = dy * u.z() - dz * u.y(), cy = dz * u.x() - dx * u.z(), cz = dx * u.y() - dy * u.x();
+      return (dx * dx + dy * dy + dz * dz) * (cx * cx + cy * cy + cz * cz);
+    };
+    // The bound at the product of one point, nudged by up to two ulps either way.
+    double bound = std::sqrt(product(pts[q]));
+    for (int step = 0, steps = static_cast<int>(q % 5) - 2; step < std::abs(steps); ++step) bound = std::nextafter(bound, steps > 0 ? 1.0 : 0.0);
+    index.near_ray(p, n, bound, got);
+    std::sort(got.begin(), got.end());
+    std::vector<std::size_t> expected;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      if (product(pts[i]) <= bound * bound) expected.push_back(i);
+    assert_true(got == expected);
+    edge_points += std::binary_search(expected.begin(), expected.end(), q) ? 1 : 0;
+  }
+  assert_true(edge_points > 500 && edge_points < 2500);  // the edge point in, and out, often
+}
+
 void ray_columns_made_by_concurrent_first_queries(void**) {
   // Ray queries read a chunk's points from columns in leaf order, made by the first ray query
   // on it: two threads asking at once, on a fresh index, get what one thread gets (the
@@ -347,6 +381,7 @@ int main() {
       cmocka_unit_test(ray_neighbourhoods_are_the_same_at_any_magnitude),
       cmocka_unit_test(forest_queries_match_brute_force),
       cmocka_unit_test(forest_does_not_depend_on_threads),
+      cmocka_unit_test(ray_neighbourhood_is_the_point_test_to_the_last_bit),
       cmocka_unit_test(ray_columns_made_by_concurrent_first_queries),
       cmocka_unit_test(forest_build_is_metered_and_cancellable),
       cmocka_unit_test(errors_name_the_problem),

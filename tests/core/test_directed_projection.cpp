@@ -118,9 +118,12 @@ void moments_are_the_plain_sums_bit_for_bit(void**) {
     const Vec3 u = n / n.norm();
     double c0 = 0.0;
     Vec3 first = Vec3::Zero();
+    const double inv_h = 1.0 / h;
     for (std::size_t i : near) {
-      const Vec3 d = (pts[i] - p) * (1.0 / h);
-      const double a = 1.0 / (1.0 + d.squaredNorm() * d.cross(u).squaredNorm());
+      // Eq. (5)'s weight, the sums of squares taken x, y, then z.
+      const double dx = (pts[i].x() - p.x()) * inv_h, dy = (pts[i].y() - p.y()) * inv_h, dz = (pts[i].z() - p.z()) * inv_h;
+      const double cx = dy * u.z() - dz * u.y(), cy = dz * u.x() - dx * u.z(), cz = dx * u.y() - dy * u.x();
+      const double a = 1.0 / (1.0 + (dx * dx + dy * dy + dz * dz) * (cx * cx + cy * cy + cz * cz));
       c0 += a;
       first += a * (pts[i] - p);
     }
