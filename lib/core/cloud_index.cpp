@@ -108,15 +108,12 @@ struct RayBoxBound {
     scaled_bound2 = scaled_bound * scaled_bound;
   }
 
-  /// The point test on d = x - p.
-  bool holds(const Vec3& d) const { return holds(d.x(), d.y(), d.z()); }
-  /// The same on d's coordinates, written out: the leaves' column scan (LeafColumns::scan)
+  /// The point test on d = x - p, written out: the leaves' column scan (LeafColumns::scan)
   /// runs this very arithmetic on two points at once, so both give the same answers.
-  bool holds(double dx, double dy, double dz) const { return point_test(dx, dy, dz, scale, u.x(), u.y(), u.z(), scaled_bound2); }
-  static bool point_test(double dx, double dy, double dz, double scale, double ux, double uy, double uz, double bound2) {
+  bool holds(double dx, double dy, double dz) const {
     const double sx = dx * scale, sy = dy * scale, sz = dz * scale;
-    const double cx = sy * uz - sz * uy, cy = sz * ux - sx * uz, cz = sx * uy - sy * ux;
-    return (sx * sx + sy * sy + sz * sz) * (cx * cx + cy * cy + cz * cz) <= bound2;
+    const double cx = sy * u.z() - sz * u.y(), cy = sz * u.x() - sx * u.z(), cz = sx * u.y() - sy * u.x();
+    return (sx * sx + sy * sy + sz * sz) * (cx * cx + cy * cy + cz * cz) <= scaled_bound2;
   }
 
   /// Whether the box [lo, hi] may hold a point that holds(): false once r rho > bound for
@@ -168,8 +165,8 @@ class LeafColumns {
   void scan(std::size_t begin, std::size_t end, const RayBoxBound& query, std::vector<std::size_t>& out) const {
     std::size_t k = begin;
 #ifdef __SSE2__
-    // Two points at a time, with the operations of point_test in the same order (no fused
-    // multiply-add on baseline x86-64): the same answer for each point, bit for bit.
+    // Two points at a time, with the operations of holds() in the same order (no fused
+    // multiply-add: -ffp-contract=off, lib/CMakeLists.txt): the same answer for each point.
     const __m128d px = _mm_set1_pd(query.p.x()), py = _mm_set1_pd(query.p.y()), pz = _mm_set1_pd(query.p.z());
     const __m128d ux = _mm_set1_pd(query.u.x()), uy = _mm_set1_pd(query.u.y()), uz = _mm_set1_pd(query.u.z());
     const __m128d scale = _mm_set1_pd(query.scale), bound2 = _mm_set1_pd(query.scaled_bound2);

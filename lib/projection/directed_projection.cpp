@@ -42,7 +42,7 @@ class MomentSum {
 
   /// add() of points[i] for each i of `near`, in that order. The weights of two points are
   /// computed at once where SSE2 is there, with add()'s operations in the same order (no fused
-  /// multiply-add on baseline x86-64); the sums take them one by one, as add() does.
+  /// multiply-add: -ffp-contract=off, lib/CMakeLists.txt); the sums take them one by one.
   void add_all(const std::vector<Vec3>& points, const std::vector<std::size_t>& near) {
     std::size_t k = 0;
 #ifdef __SSE2__
