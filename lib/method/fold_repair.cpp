@@ -246,6 +246,11 @@ std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>&
   return out;
 }
 
+int max_wide_rings(std::size_t points) {
+  const double across = std::sqrt(static_cast<double>(points)) / kPointsAcrossPerRing;
+  return std::min(kMaxDenseWideRings, std::max(kMaxWideRings, static_cast<int>(std::floor(across + 0.5))));
+}
+
 bool beyond_repair_reach(const Result& result, std::size_t i) {
   const double d = result.distance[i];
   return d > kRepairFactor * result.accuracy && d > kRepairSpacings * result.length_scale;

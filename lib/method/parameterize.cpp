@@ -194,7 +194,7 @@ class Driver {
           result_.stage_seconds.folds += seconds_since(folds_start);
         }
         std::size_t best_doubts = doubted_points(folds);
-        for (int rings = 1; (moved || !narrow_work) && rings <= kMaxWideRings && best_doubts > 0; ++rings) {
+        for (int rings = 1; (moved || !narrow_work) && rings <= max_wide_rings(body_points_) && best_doubts > 0; ++rings) {
           repair_start = Clock::now();
           const RepairSnapshot best(result_);
           unrepaired.restore(result_);

@@ -2,6 +2,7 @@
 // the same unrepaired result, the driver's choice among them, the snapshot that lets the
 // driver undo one, and far points of a sparsely sampled sheet repaired rather than left as
 // outliers. Reference triangles (fold_shapes) only score; the library never sees them.
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -208,6 +209,37 @@ void no_reach_raises_the_mean_distance(void**) {
   assert_true(2 * reference_folds(shape, chosen) < reference_folds(shape, plain));
 }
 
+void reach_grows_with_the_points_across_the_cloud(void**) {
+  // A ring is a step to the nearest points: the widest reach tried grows with sqrt(points), so
+  // that it spans the same share of a denser cloud, and stops at kMaxDenseWideRings.
+  assert_int_equal(dbs::max_wide_rings(0), dbs::kMaxWideRings);
+  assert_int_equal(dbs::max_wide_rings(4096), 2);
+  assert_int_equal(dbs::max_wide_rings(14399), 2);
+  assert_int_equal(dbs::max_wide_rings(14400), 3);
+  assert_int_equal(dbs::max_wide_rings(28223), 3);
+  assert_int_equal(dbs::max_wide_rings(28224), 4);
+  assert_int_equal(dbs::max_wide_rings(1000000), dbs::kMaxDenseWideRings);
+  // The fingers at 4 times the points (16,240): their missed tips span more rings than at
+  // scan density. Up to 2 rings the repair left 287 folded reference triangles (dbs-bench-folds);
+  // trying 3 leaves 15, at a lower mean distance.
+  const FoldShape shape = dbs_folds::fold_shape("fingers", 4.0);
+  const std::vector<Vec3> points = points_of(shape.xyz);
+  assert_int_equal(dbs::max_wide_rings(points.size()), 3);
+  const dbs::Result plain = run(shape, 0), chosen = run(shape, 1);
+  const dbs::FoldMeasure first = dbs::measure_folds(points, plain.u, plain.v, plain.noise, 1);
+  std::size_t fewest = static_cast<std::size_t>(-1);
+  for (int rings = 0; rings <= dbs::kMaxWideRings; ++rings) {
+    dbs::Result r = plain;
+    r.repaired_points = dbs::repair_folds(r, points, dbs::doubtful_points(r, points, {}, first.state, 1, nullptr, dbs::RepairReach{rings}), 1).repaired;
+    fewest = std::min(fewest, reference_folds(shape, r));
+  }
+  std::printf("fingers x4: reference folds %zu unrepaired, %zu at best within 2 rings, %zu chosen; mean distance %.3g unrepaired, %.3g chosen\n",
+              reference_folds(shape, plain), fewest, reference_folds(shape, chosen), plain.mean_distance, chosen.mean_distance);
+  assert_true(4 * reference_folds(shape, chosen) < fewest);
+  assert_true(reference_folds(shape, chosen) <= 40);
+  assert_true(chosen.mean_distance <= plain.mean_distance);
+}
+
 void snapshot_puts_the_result_back_bit_for_bit(void**) {
   const FoldShape shape = dbs_folds::fold_shape("mushroom");
   const std::vector<Vec3> points = points_of(shape.xyz);
@@ -251,6 +283,7 @@ int main() {
       cmocka_unit_test(wide_reach_unfolds_a_feature_the_surfaces_missed),
       cmocka_unit_test(choice_on_a_tall_feature),
       cmocka_unit_test(no_reach_raises_the_mean_distance),
+      cmocka_unit_test(reach_grows_with_the_points_across_the_cloud),
   };
   return cmocka_run_group_tests_name("repair_reach", tests, nullptr, nullptr);
 }
