@@ -248,7 +248,12 @@ std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>&
 
 int max_wide_rings(std::size_t points) {
   const double across = std::sqrt(static_cast<double>(points)) / kPointsAcrossPerRing;
-  return std::min(kMaxDenseWideRings, std::max(kMaxWideRings, static_cast<int>(std::floor(across + 0.5))));
+  return std::max(kMaxWideRings, static_cast<int>(std::floor(across + 0.5)));
+}
+
+int next_wide_rings(int rings, int widest) {
+  if (rings >= widest) return widest + 1;
+  return std::min(widest, std::max(rings + 1, rings * 3 / 2));
 }
 
 bool beyond_repair_reach(const Result& result, std::size_t i) {

@@ -194,7 +194,8 @@ class Driver {
           result_.stage_seconds.folds += seconds_since(folds_start);
         }
         std::size_t best_doubts = doubted_points(folds);
-        for (int rings = 1; (moved || !narrow_work) && rings <= max_wide_rings(body_points_) && best_doubts > 0; ++rings) {
+        const int widest = max_wide_rings(body_points_);
+        for (int rings = 1; (moved || !narrow_work) && rings <= widest && best_doubts > 0; rings = next_wide_rings(rings, widest)) {
           repair_start = Clock::now();
           const RepairSnapshot best(result_);
           unrepaired.restore(result_);
