@@ -251,11 +251,6 @@ int max_wide_rings(std::size_t points) {
   return std::max(kMaxWideRings, static_cast<int>(std::floor(across + 0.5)));
 }
 
-int next_wide_rings(int rings, int widest) {
-  if (rings >= widest) return widest + 1;
-  return std::min(widest, std::max(rings + 1, rings * 3 / 2));
-}
-
 bool beyond_repair_reach(const Result& result, std::size_t i) {
   const double d = result.distance[i];
   return d > kRepairFactor * result.accuracy && d > kRepairSpacings * result.length_scale;

@@ -58,23 +58,18 @@ constexpr double kSuspectClusterShare = 0.75;    ///< an undecided point is repa
 constexpr double kBorderOffset = 0.4;           ///< ... and it is inside the cloud: its neighbours' centroid within this x their mean distance
 
 constexpr int kMaxWideRings = 2;                ///< the driver tries wide reaches of 1 .. this many rings ...
-constexpr double kPointsAcrossPerRing = 48.0;   ///< ... or up to sqrt(points) / this, the larger
+constexpr double kPointsAcrossPerRing = 48.0;   ///< ... or of 1 .. sqrt(points) / this, the larger
 
-/// The widest reach the driver tries on a cloud of `points` points. A ring is a step to the
-/// nearest points, so on a denser cloud the same number of rings reaches a smaller share of
-/// the surface; a region the surfaces missed (under a cap, round a finger) spans the same
-/// share at any density. The rings grow with the points across the cloud (sqrt(points),
-/// rounded): kMaxWideRings below 14,400 points, 3 from there, 4 from 28,224, 5 from 46,656
-/// (21 at 1M). On the 30 denser clouds of dbs-bench-folds (3.5-8 times its points): 3,174 ->
-/// 2,256 folded reference triangles, the fingers at 4 times 287 -> 15, at 4.8 times 486 ->
-/// 75; at 12 times (48,642 points) 575 with 4 rings, 70 with 5; the 102 clouds below 14,400
-/// points are unchanged.
+/// The widest reach the driver tries when the rings step over `points` points: the points the
+/// fold measure judged (the whole cloud, or its even sample of a large one, at most 20,000
+/// points). A ring is a step to the nearest of those points, so over more points the same
+/// rings reach a smaller share of the surface, while a region the surfaces missed (round the
+/// fingers' tips, under the mushroom's cap) spans the same share at any density. The rings
+/// grow with the points across (sqrt(points), rounded): kMaxWideRings below 14,400 points, 3
+/// from there (the most over a 20,000-point sample). On the 30 denser clouds of
+/// dbs-bench-folds (3.5-8 times its points, 14,279-32,761): 3,174 -> 2,349 folded reference
+/// triangles, the fingers at 4 times 287 -> 15; the 102 clouds below 14,400 points unchanged.
 int max_wide_rings(std::size_t points);
-
-/// The reach the driver tries after `rings` when the widest is `widest`: one ring more up to
-/// 4, then half as many again (1, 2, 3, 4, 6, 9, 13, 19 ...; each try is a repair and a fold
-/// measure), the widest last; widest + 1 after the widest.
-int next_wide_rings(int rings, int widest);
 
 /// How far around the doubtful points the repair reaches. Narrow (wide_rings 0): the doubtful
 /// points and one ring of their nearest points, never at the cloud's border. Wide (wide_rings

@@ -194,8 +194,9 @@ class Driver {
           result_.stage_seconds.folds += seconds_since(folds_start);
         }
         std::size_t best_doubts = doubted_points(folds);
-        const int widest = max_wide_rings(body_points_);
-        for (int rings = 1; (moved || !narrow_work) && rings <= widest && best_doubts > 0; rings = next_wide_rings(rings, widest)) {
+        // The rings step over the points the measure judged (all, or its sample of a large cloud).
+        const int widest = max_wide_rings(judged.empty() ? points_.size() : judged.size());
+        for (int rings = 1; (moved || !narrow_work) && rings <= widest && best_doubts > 0; ++rings) {
           repair_start = Clock::now();
           const RepairSnapshot best(result_);
           unrepaired.restore(result_);
