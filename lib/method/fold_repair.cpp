@@ -246,7 +246,8 @@ std::vector<char> doubtful_points(const Result& result, const std::vector<Vec3>&
   return out;
 }
 
-int max_wide_rings(std::size_t points) {
+int max_wide_rings(std::size_t points, bool noisy) {
+  if (noisy) return kMaxWideRings;
   const double across = std::sqrt(static_cast<double>(points)) / kPointsAcrossPerRing;
   return std::max(kMaxWideRings, static_cast<int>(std::floor(across + 0.5)));
 }

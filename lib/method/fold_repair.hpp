@@ -69,7 +69,11 @@ constexpr double kPointsAcrossPerRing = 48.0;   ///< ... or of 1 .. sqrt(points)
 /// from there (the most over a 20,000-point sample). On the 30 denser clouds of
 /// dbs-bench-folds (3.5-8 times its points, 14,279-32,761): 3,174 -> 2,349 folded reference
 /// triangles, the fingers at 4 times 287 -> 15; the 102 clouds below 14,400 points unchanged.
-int max_wide_rings(std::size_t points);
+/// `noisy`: the cloud's noise floor is above the requested target. There the doubtful points
+/// are partly the noise's, and the wider fill moved more sound points (32 noisy clouds at 4 and
+/// 6 times the points: the three it changed all fitted worse, the tall dome's folds 266 -> 392),
+/// so the widest stays kMaxWideRings.
+int max_wide_rings(std::size_t points, bool noisy);
 
 /// How far around the doubtful points the repair reaches. Narrow (wide_rings 0): the doubtful
 /// points and one ring of their nearest points, never at the cloud's border. Wide (wide_rings

@@ -145,6 +145,7 @@ class Driver {
     // target below that can only be met by following the noise (leaves tilting, subdividing
     // to the last level, folds), so it is raised to a safety factor above it.
     const double floor = kNoiseFloorFactor * result_.noise * std::sqrt(2.0 / kPi);
+    noisy_ = floor > result_.requested_accuracy;
     result_.accuracy = options_.noise_floor ? std::max(result_.requested_accuracy, floor) : result_.requested_accuracy;
     set_refinement();
     report(kIndexEnd, "index");
@@ -195,7 +196,7 @@ class Driver {
         }
         std::size_t best_doubts = doubted_points(folds);
         // The rings step over the points the measure judged (all, or its sample of a large cloud).
-        const int widest = max_wide_rings(judged.empty() ? points_.size() : judged.size());
+        const int widest = max_wide_rings(judged.empty() ? points_.size() : judged.size(), noisy_);
         for (int rings = 1; (moved || !narrow_work) && rings <= widest && best_doubts > 0; ++rings) {
           repair_start = Clock::now();
           const RepairSnapshot best(result_);
@@ -941,6 +942,8 @@ class Driver {
   std::uint64_t stage_units_start_ = 0, stage_units_expected_ = 1;
   int threads_;
   double plain_first_level_error_ = 0.0;
+  /// Whether the noise floor is above the requested target (set with the target).
+  bool noisy_ = false;
   Result result_;
   RefinementSettings refinement_;
   std::vector<char> inside_;  // per point: its foot lies inside its leaf (A2)

@@ -212,20 +212,23 @@ void no_reach_raises_the_mean_distance(void**) {
 void reach_grows_with_the_points_across_the_cloud(void**) {
   // A ring is a step to the nearest points: the widest reach tried grows with sqrt(points), so
   // that it spans the same share of a denser cloud.
-  assert_int_equal(dbs::max_wide_rings(0), dbs::kMaxWideRings);
-  assert_int_equal(dbs::max_wide_rings(4096), 2);
-  assert_int_equal(dbs::max_wide_rings(14399), 2);
-  assert_int_equal(dbs::max_wide_rings(14400), 3);
-  assert_int_equal(dbs::max_wide_rings(28223), 3);
-  assert_int_equal(dbs::max_wide_rings(28224), 4);
-  // Over the fold measure's sample of a large cloud (20,000 points), 3.
-  assert_int_equal(dbs::max_wide_rings(20000), 3);
+  assert_int_equal(dbs::max_wide_rings(0, false), dbs::kMaxWideRings);
+  assert_int_equal(dbs::max_wide_rings(4096, false), 2);
+  assert_int_equal(dbs::max_wide_rings(14399, false), 2);
+  assert_int_equal(dbs::max_wide_rings(14400, false), 3);
+  assert_int_equal(dbs::max_wide_rings(28223, false), 3);
+  assert_int_equal(dbs::max_wide_rings(28224, false), 4);
+  // Over the fold measure's sample of a large cloud (20,000 points), 3; on a cloud whose noise
+  // floor is above the requested target, 2 at any size.
+  assert_int_equal(dbs::max_wide_rings(20000, false), 3);
+  assert_int_equal(dbs::max_wide_rings(20000, true), dbs::kMaxWideRings);
+  assert_int_equal(dbs::max_wide_rings(4096, true), dbs::kMaxWideRings);
   // The fingers at 4 times the points (16,240): their missed tips span more rings than at
   // scan density. Up to 2 rings the repair left 287 folded reference triangles (dbs-bench-folds);
   // trying 3 leaves 15, at a lower mean distance.
   const FoldShape shape = dbs_folds::fold_shape("fingers", 4.0);
   const std::vector<Vec3> points = points_of(shape.xyz);
-  assert_int_equal(dbs::max_wide_rings(points.size()), 3);
+  assert_int_equal(dbs::max_wide_rings(points.size(), false), 3);
   const dbs::Result plain = run(shape, 0), chosen = run(shape, 1);
   const dbs::FoldMeasure first = dbs::measure_folds(points, plain.u, plain.v, plain.noise, 1);
   std::size_t fewest = static_cast<std::size_t>(-1);
