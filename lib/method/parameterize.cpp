@@ -140,13 +140,7 @@ class Driver {
     check_boundary_against_cloud(*cloud_index_, boundary_, result_.length_scale, checks_);
     warn_or_fail(boundary_warnings(checks_));
     if (result_.far_points > 0) warn({far_points_warning()});
-    // The noise floor: a surface lying exactly on the true surface scores a mean distance of
-    // about sigma sqrt(2/pi) against points with Gaussian noise sigma along the normal; a
-    // target below that can only be met by following the noise (leaves tilting, subdividing
-    // to the last level, folds), so it is raised to a safety factor above it.
-    const double floor = kNoiseFloorFactor * result_.noise * std::sqrt(2.0 / kPi);
-    noisy_ = floor > result_.requested_accuracy;
-    result_.accuracy = options_.noise_floor ? std::max(result_.requested_accuracy, floor) : result_.requested_accuracy;
+    result_.accuracy = options_.noise_floor ? std::max(result_.requested_accuracy, noise_floor()) : result_.requested_accuracy;
     set_refinement();
     report(kIndexEnd, "index");
 
@@ -196,7 +190,7 @@ class Driver {
         }
         std::size_t best_doubts = doubted_points(folds);
         // The rings step over the points the measure judged (all, or its sample of a large cloud).
-        const int widest = max_wide_rings(judged.empty() ? points_.size() : judged.size(), noisy_);
+        const int widest = max_wide_rings(judged.empty() ? points_.size() : judged.size(), noise_floor() > result_.requested_accuracy);
         for (int rings = 1; (moved || !narrow_work) && rings <= widest && best_doubts > 0; ++rings) {
           repair_start = Clock::now();
           const RepairSnapshot best(result_);
@@ -614,6 +608,12 @@ class Driver {
     leaf.accurate = leaf.error <= result_.accuracy;
   }
 
+  /// The noise floor: a surface lying exactly on the true surface scores a mean distance of
+  /// about sigma sqrt(2/pi) against points with Gaussian noise sigma along the normal; a
+  /// target below that can only be met by following the noise (leaves tilting, subdividing
+  /// to the last level, folds), so it is raised to a safety factor above it.
+  double noise_floor() const { return kNoiseFloorFactor * result_.noise * std::sqrt(2.0 / kPi); }
+
   /// The mean distance of the points the statistics count (summed in index order).
   double mean_counted_distance() const {
     const std::vector<double> counted = result_.counted_distances();
@@ -942,8 +942,6 @@ class Driver {
   std::uint64_t stage_units_start_ = 0, stage_units_expected_ = 1;
   int threads_;
   double plain_first_level_error_ = 0.0;
-  /// Whether the noise floor is above the requested target (set with the target).
-  bool noisy_ = false;
   Result result_;
   RefinementSettings refinement_;
   std::vector<char> inside_;  // per point: its foot lies inside its leaf (A2)
