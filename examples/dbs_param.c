@@ -52,6 +52,8 @@ static const char *const usage_text =
     "                             more points on turned sheets [0]\n"
     "  --coarse-pass 0|1|2        where the surfaces pleated, a second pass from a coarse root;\n"
     "                             the better result is kept, 1 folds first, 2 fit first [1]\n"
+    "  --fit-to-target 0|1        a patch whose largest grid misses the target is fitted to its\n"
+    "                             points and kept a leaf where that meets it [1]\n"
     "  --auto-boundary            no BOUNDARY: the cloud's outline cut at its four corners\n"
     "                             (dbs_boundary_detect)\n"
     "  --outline-neighbours N     neighbourhood of the outline with --auto-boundary [24]\n"
@@ -156,6 +158,7 @@ static struct option_value library_options[] = {
     {"--repair", DBS_OPT_REPAIR, VALUE_INT, NULL, 0, 0.0, 0},
     {"--smooth-turned", DBS_OPT_SMOOTH_TURNED, VALUE_INT, NULL, 0, 0.0, 0},
     {"--coarse-pass", DBS_OPT_COARSE_PASS, VALUE_INT, NULL, 0, 0.0, 0},
+    {"--fit-to-target", DBS_OPT_FIT_TO_TARGET, VALUE_INT, NULL, 0, 0.0, 0},
     {"--loss", DBS_OPT_LOSS, VALUE_LOSS, NULL, 0, 0.0, 0},
     {"--loss-scale", DBS_OPT_LOSS_SCALE, VALUE_DOUBLE, NULL, 0, 0.0, 0},
     {"--ceres-iterations", DBS_OPT_CERES_MAX_ITERATIONS, VALUE_INT, NULL, 0, 0.0, 0},

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "fit_to_target.hpp"
 #include "grid_projection.hpp"
 #include "meshless_seed.hpp"
 #include "parallel.hpp"
@@ -237,6 +238,7 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
       }
     }
   }
+  if (settings.fit_to_target) fit_to_target(patch, points, stride, feet, settings, mean, max, error);
   // The sample's figures; a patch that stays a leaf is measured on all its points by the
   // projection of its subcloud (A2), which computes those distances anyway.
   patch.mean_distance = mean;

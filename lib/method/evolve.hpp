@@ -53,6 +53,9 @@ struct EvolveSettings {
   /// the evolution is the one without the factor.
   double far_above = 0.0;
   bool stop_when_far = false;
+  /// A patch whose grid stops growing above the target (but within kFitReach times it) is
+  /// fitted to its sample at their feet, kept where that meets the target (fit_to_target.hpp).
+  bool fit_to_target = true;
 };
 
 /// Called after each grid evolution with the grid size reached; may throw to cancel.

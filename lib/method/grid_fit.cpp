@@ -31,14 +31,13 @@ const GridFitBasis::Cardinals* GridFitBasis::find(int nu, int nv) const {
   return found == made_.end() ? nullptr : &found->second;
 }
 
-bool fit_grid_to_parameters(Patch& leaf, const std::vector<std::size_t>& ids, const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v,
-                            const GridFitBasis* basis) {
-  const Grid& grid = leaf.grid;
+bool fit_grid_to_feet(const BaseSurface& surface, const Grid& grid, const std::vector<std::size_t>& ids, const std::vector<Vec2>& st, const std::vector<Vec3>& points,
+                      const GridFitBasis* basis, Grid& out) {
   const int nu = grid.nu, nv = grid.nv;
-  if (nu < 3 || nv < 3 || ids.empty()) return false;
+  if (nu < 3 || nv < 3 || ids.empty() || st.size() != ids.size()) return false;
   const int mi = nu - 2, mj = nv - 2, m = mi * mj;
   if (m > kMaxRefitNodes) return false;  // a dense m x m system beyond this costs more than it is worth
-  const BaseSurface coons(leaf.surface.boundary());
+  const BaseSurface coons(surface.boundary());
   GridFitBasis own;
   const GridFitBasis::Cardinals* cardinals = basis ? basis->find(nu, nv) : nullptr;
   if (!cardinals) {
@@ -60,11 +59,11 @@ bool fit_grid_to_parameters(Patch& leaf, const std::vector<std::size_t>& ids, co
     filled = 0;
   };
   for (std::size_t k = 0; k < ids.size(); ++k) {
-    const Vec2 st = leaf.rect.to_local(u[ids[k]], v[ids[k]]).cwiseMax(0.0).cwiseMin(1.0);
-    for (int i = 0; i < mi; ++i) ph[i] = phi[static_cast<std::size_t>(i)].eval(st.x(), grid.v(1)).x();
-    for (int j = 0; j < mj; ++j) ps[j] = psi[static_cast<std::size_t>(j)].eval(grid.u(1), st.y()).x();
+    const Vec2 at = st[k].cwiseMax(0.0).cwiseMin(1.0);
+    for (int i = 0; i < mi; ++i) ph[i] = phi[static_cast<std::size_t>(i)].eval(at.x(), grid.v(1)).x();
+    for (int j = 0; j < mj; ++j) ps[j] = psi[static_cast<std::size_t>(j)].eval(grid.u(1), at.y()).x();
     for (int c = 0; c < m; ++c) rows(c, filled) = ph[c % mi] * ps[c / mi];
-    residual.row(filled) = (points[ids[k]] - coons.eval(st.x(), st.y())).transpose();
+    residual.row(filled) = (points[ids[k]] - coons.eval(at.x(), at.y())).transpose();
     if (++filled == kRefitBlock) flush();
   }
   if (filled > 0) flush();
@@ -78,11 +77,20 @@ bool fit_grid_to_parameters(Patch& leaf, const std::vector<std::size_t>& ids, co
   // LDLT reads the lower triangle, the one accumulated.
   const Eigen::MatrixXd g = normal.ldlt().solve(rhs + lambda * g0);
   if (!g.allFinite()) return false;
-  Grid fitted = grid;
+  out = grid;
   for (int c = 0; c < m; ++c) {
     const int i = 1 + c % mi, j = 1 + c / mi;
-    fitted(i, j) = coons.eval(grid.u(i), grid.v(j)) + Vec3(g(c, 0), g(c, 1), g(c, 2));
+    out(i, j) = coons.eval(grid.u(i), grid.v(j)) + Vec3(g(c, 0), g(c, 1), g(c, 2));
   }
+  return true;
+}
+
+bool fit_grid_to_parameters(Patch& leaf, const std::vector<std::size_t>& ids, const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v,
+                            const GridFitBasis* basis) {
+  std::vector<Vec2> st(ids.size());
+  for (std::size_t k = 0; k < ids.size(); ++k) st[k] = leaf.rect.to_local(u[ids[k]], v[ids[k]]);
+  Grid fitted;
+  if (!fit_grid_to_feet(leaf.surface, leaf.grid, ids, st, points, basis, fitted)) return false;
   leaf.surface = BaseSurface(leaf.surface.boundary(), fitted);
   leaf.grid = std::move(fitted);
   return true;

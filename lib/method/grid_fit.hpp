@@ -1,6 +1,7 @@
 // The least-squares fit of a patch's grid to points at known (u,v): the repair refits the
-// leaves it moved points onto (fold_repair.hpp), and the root may start from a fit to a
-// meshless parameterization of its cloud (meshless_seed.hpp).
+// leaves it moved points onto (fold_repair.hpp), the root may start from a fit to a
+// meshless parameterization of its cloud (meshless_seed.hpp), and a patch whose largest grid
+// misses the target is fitted to its sample at their feet (evolve.hpp).
 #pragma once
 #include <cstddef>
 #include <map>
@@ -48,5 +49,12 @@ class GridFitBasis {
 /// made for this fit alone.
 bool fit_grid_to_parameters(Patch& leaf, const std::vector<std::size_t>& ids, const std::vector<Vec3>& points, const std::vector<double>& u, const std::vector<double>& v,
                             const GridFitBasis* basis = nullptr);
+
+/// The grid of the fit above without a patch: `grid` (of `surface`, whose boundary it keeps)
+/// fitted to points[ids[k]] at the local parameters st[k] of the surface (clamped to
+/// [0,1]^2), into `out`. False (`out` untouched) when the fit refuses, as above, or the sizes
+/// of ids and st differ.
+bool fit_grid_to_feet(const BaseSurface& surface, const Grid& grid, const std::vector<std::size_t>& ids, const std::vector<Vec2>& st, const std::vector<Vec3>& points,
+                      const GridFitBasis* basis, Grid& out);
 
 }  // namespace dbs

@@ -44,6 +44,7 @@ const OptionSpec kSpecs[] = {
     {{"strict", true, 0.0, 1.0}, false},
     {{"smooth_turned", true, 0.0, 1.0}, false},
     {{"coarse_pass", true, 0.0, 2.0}, false},
+    {{"fit_to_target", true, 0.0, 1.0}, false},
 };
 constexpr int kOptionCount = static_cast<int>(sizeof(kSpecs) / sizeof(kSpecs[0]));
 
@@ -102,6 +103,7 @@ int Options::*integer_member(OptionId id) {
     case OptionId::Strict: return &Options::strict;
     case OptionId::SmoothTurned: return &Options::smooth_turned;
     case OptionId::CoarsePass: return &Options::coarse_pass;
+    case OptionId::FitToTarget: return &Options::fit_to_target;
     default: return nullptr;
   }
 }

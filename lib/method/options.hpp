@@ -46,6 +46,9 @@ struct Options {
   /// Where the plain pass pleated, a second pass from a coarse root, and the better result
   /// kept (coarse_pass.hpp): 1 folds first, 2 fit first; 0: the plain pass only.
   int coarse_pass = 1;
+  /// 1: a patch whose largest grid misses the target is fitted to its sample at their feet
+  /// and stays a leaf where that meets it (fit_to_target.hpp); 0: eq. (5)'s projections alone.
+  int fit_to_target = 1;
   /// The Ceres refinement (curve_refinement.hpp), used with Solver::Ceres only: the robust
   /// loss, its scale in cloud units (0 = derived from the cloud: 3 sigma of its estimated
   /// noise, at least one spacing h), iterations per curve and the function tolerance.
@@ -96,6 +99,7 @@ enum class OptionId {
   Strict = 18,
   SmoothTurned = 19,
   CoarsePass = 20,
+  FitToTarget = 21,
 };
 
 struct OptionInfo {

@@ -295,6 +295,7 @@ class Driver {
     settings.warm_up_grid = options_.initial_grid - 1;
     settings.max_grid = options_.max_grid;
     settings.gamma = options_.smoothing;
+    settings.fit_to_target = options_.fit_to_target != 0;
     settings.refinement = refinement_;
     if (refinement_.enabled && refinement_.loss != LossKind::None) {
       settings.error_loss = refinement_.loss;

@@ -119,7 +119,7 @@ void write_validation_report(const Result& result, const PointCloud& cloud, cons
   json.integer("points", static_cast<long long>(cloud.size()));
   json.begin_object("options");
   // The parameterization's options (the outline's neighbourhood is not one of them).
-  for (int id = 0; id <= static_cast<int>(OptionId::CoarsePass); ++id)
+  for (int id = 0; id <= static_cast<int>(OptionId::FitToTarget); ++id)
     if (id != static_cast<int>(OptionId::OutlineNeighbours)) json.number(option_info(id).name, get_option(options, id));
   json.end_object();
   json.begin_object("timings_seconds");

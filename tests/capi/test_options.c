@@ -39,6 +39,7 @@ static const struct option_row kOptions[] = {
     {DBS_OPT_STRICT, "strict", 1, 0, 0, 1, 1, -1, 2},
     {DBS_OPT_SMOOTH_TURNED, "smooth_turned", 1, 0, 0, 1, 1, -1, 2},
     {DBS_OPT_COARSE_PASS, "coarse_pass", 1, 1, 0, 2, 1, -1, 3},
+    {DBS_OPT_FIT_TO_TARGET, "fit_to_target", 1, 1, 0, 1, 1, -1, 2},
 };
 #define OPTION_COUNT (sizeof kOptions / sizeof kOptions[0])
 
@@ -187,7 +188,7 @@ static void the_wrong_type_is_rejected(void **state) {
 static void unknown_ids_are_rejected(void **state) {
   (void)state;
   dbs_options *options = new_options();
-  const int32_t unknown[] = {-1, 21, 1000};
+  const int32_t unknown[] = {-1, 22, 1000};
   for (int k = 0; k < 3; ++k) {
     char needle[48];
     snprintf(needle, sizeof needle, "option id %d", (int)unknown[k]);

@@ -63,6 +63,13 @@ inline Surface rippled_bumpy_field() {
   return [](double x, double y) { return Vec3(bumpy_field()(x, y) + Vec3(0, 0, 0.03 * std::sin(8 * M_PI * x) * std::sin(8 * M_PI * y))); };
 }
 
+/// bumpy_field with ripples of 6 periods a side (amplitude 0.03): beyond what one patch's
+/// largest grid reaches even fitted to its points (rippled_bumpy_field's 4 periods are reached
+/// by the fit to the target, fit_to_target.hpp), so the quadtree is needed.
+inline Surface sharply_rippled_field() {
+  return [](double x, double y) { return Vec3(bumpy_field()(x, y) + Vec3(0, 0, 0.03 * std::sin(12 * M_PI * x) * std::sin(12 * M_PI * y))); };
+}
+
 /// A rigid motion followed by a uniform scale.
 inline Vec3 move_and_scale(const Vec3& p, double scale) {
   const Eigen::Matrix3d r = (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized())).toRotationMatrix();

@@ -42,12 +42,12 @@ void names_and_types(void**) {
   }
   std::string message;
   try {
-    dbs::option_info(21);
+    dbs::option_info(22);
   } catch (const dbs::Error& e) {
     assert_int_equal(static_cast<int>(e.code()), static_cast<int>(dbs::ErrorCode::InvalidArgument));
     message = e.what();
   }
-  assert_non_null(std::strstr(message.c_str(), "unknown option id 21"));
+  assert_non_null(std::strstr(message.c_str(), "unknown option id 22"));
 }
 
 void integer_options_take_only_integral_values(void**) {

@@ -70,9 +70,17 @@ void height_field_meets_accuracy(void**) {
   assert_int_equal(grid.nv, grid.nu);
   Options smaller = o;
   smaller.max_grid = grid.nu - 1;
+  smaller.fit_to_target = 0;
   const Result missed = parameterize(cloud, boundary_of(s, 40), smaller);
   assert_true(missed.mean_distance > missed.accuracy);
   assert_int_equal(missed.patches[0].grid.nu, smaller.max_grid);
+  // That grid fitted to its points at their feet (fit_to_target.hpp, on by default) meets it.
+  smaller.fit_to_target = 1;
+  const Result fitted = parameterize(cloud, boundary_of(s, 40), smaller);
+  std::printf("height field: the %d x %d grid projected %.3g, fitted %.3g\n", smaller.max_grid, smaller.max_grid, missed.mean_distance, fitted.mean_distance);
+  assert_int_equal(fitted.patches[0].grid.nu, smaller.max_grid);
+  assert_true(fitted.mean_distance <= fitted.accuracy);
+  assert_true(fitted.mean_distance < 0.8 * missed.mean_distance);
   for (std::size_t i = 0; i < pts.size(); ++i) {
     assert_true(r.u[i] >= 0.0 && r.u[i] <= 1.0 && r.v[i] >= 0.0 && r.v[i] <= 1.0);
   }

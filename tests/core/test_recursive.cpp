@@ -280,7 +280,7 @@ void patches_over_a_hole_stay_empty_and_do_not_fold(void**) {
   const GridCloud g = grid_cloud(s, uniform(241), uniform(241), [](double a, double b) { return std::hypot(a - 0.4, b - 0.4) > 0.28; }, 0.0, 4, 2);
   const Boundary boundary = boundary_of(s, 40);
   Options o = recursive();
-  o.accuracy = 6e-4;  // what level 3 reaches on these ripples
+  o.accuracy = 2e-4;  // what level 3 reaches on these ripples
   const Result r = parameterize(PointCloud(g.points), boundary, o);
   std::size_t empty = 0;
   double worst = 0.0;
@@ -310,7 +310,7 @@ void thick_cloud_does_not_fold(void**) {
   // reference triangles join every 4th point (edges about 5 noise deviations long): finer
   // ones would fold in the cloud itself, whatever the parameterization.
   const double size = std::sqrt(2.0), noise = 0.005 * size;
-  const Surface sharp = rippled_bumpy_field();  // one patch cannot reach the target
+  const Surface sharp = sharply_rippled_field();  // one patch cannot reach the target
   const GridCloud g = grid_cloud(sharp, uniform(109), uniform(109), [](double, double) { return true; }, noise, 2, 4);
   Options o = recursive();
   o.accuracy = noise;  // the mean absolute noise is 0.8 sigma
@@ -328,7 +328,11 @@ void density_change_does_not_fold(void**) {
   as.push_back(1.0);
   const GridCloud g = grid_cloud(bumpy_field(), as, uniform(60), [](double, double) { return true; }, 0.0, 3);
   Options o = recursive();
-  o.relative_accuracy = 1e-4;  // one patch does not reach it
+  o.relative_accuracy = 1e-4;
+  // One patch does not reach the target, even fitted to its points (fit_to_target.hpp; with
+  // 11 x 11 grids the fit meets it at the root). With 9 x 9 grids one reference triangle folds
+  // here, with or without the fit.
+  o.max_grid = 8;
   const Result r = parameterize(PointCloud(g.points), boundary_of(bumpy_field(), 40), o);
   std::printf("density change: %d levels, %zu leaves, mean distance %.3g, target %.3g\n", r.levels, r.leaf_count(), r.mean_distance, r.accuracy);
   assert_true(r.levels >= 2);

@@ -276,9 +276,9 @@ FoldShape saddle(double relative_noise) {
 
 FoldShape rippled(double relative_noise) {
   auto s = [](double a, double b) {
-    return Point3{a, b, 0.2 * std::sin(kPi * a) * std::sin(kPi * b) + kRippleAmplitude * std::sin(8 * kPi * a) * std::sin(8 * kPi * b)};
+    return Point3{a, b, 0.2 * std::sin(kPi * a) * std::sin(kPi * b) + kRippleAmplitude * std::sin(12 * kPi * a) * std::sin(12 * kPi * b)};
   };
-  return build("rippled" + noise_suffix(relative_noise), "z = 0.2 sin(pi x) sin(pi y) + 0.012 sin(8 pi x) sin(8 pi y)", s, 64, 64, relative_noise,
+  return build("rippled" + noise_suffix(relative_noise), "z = 0.2 sin(pi x) sin(pi y) + 0.012 sin(12 pi x) sin(12 pi y)", s, 64, 64, relative_noise,
                0x819913d);
 }
 

@@ -54,8 +54,10 @@ constexpr double kMinAngleDegrees = 10.0;
 
 /// (a) saddle z = 0.6 (x^2 - y^2) over [-1,1]^2.
 FoldShape saddle(double relative_noise = 0.0);
-/// (b) z = 0.2 sin(pi x) sin(pi y) + 0.012 sin(8 pi x) sin(8 pi y) on the unit square:
-///     ripples one 11 x 11 grid cannot follow; noise-free, the default options need 2 levels.
+/// (b) z = 0.2 sin(pi x) sin(pi y) + 0.012 sin(12 pi x) sin(12 pi y) on the unit square:
+///     ripples one 11 x 11 grid cannot follow, even fitted to the points (6 periods a side; 4
+///     were reached by the fit to the target, fit_to_target.hpp); noise-free, the default
+///     options need 2 levels.
 FoldShape rippled(double relative_noise = 0.0);
 /// (c) a mushroom on a plate: stem radius 0.1, cap radius 0.24 whose rim overhangs the stem
 ///     by 0.14 (seen from the plate, the ring between stem and rim is covered three times); 0.38 tall.
