@@ -18,7 +18,7 @@
 // needs no truth (DBS_STAT_TURNED_*). The bench repeats the library's "on the surface" rule
 // (beyond_repair_reach) from the statistics, as it sees the C API only.
 //
-// usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--smooth-turned 0|1] [--coarse-pass 0|1|2] [--solver linear|ceres] [--density F] [--noise F] [--save DIR]
+// usage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--smooth-turned 0|1] [--coarse-pass 0|1|2] [--fit-to-target 0|1] [--solver linear|ceres] [--density F] [--noise F] [--save DIR]
 // --noise F adds Gaussian noise along the normal, sigma F times the diagonal (a noisy shape
 // keeps its own where larger): the hard shapes as a scanner sees them.
 #include <algorithm>
@@ -43,7 +43,7 @@ using dbs_folds::FoldCount;
 using dbs_folds::FoldShape;
 
 [[noreturn]] void usage_error(const std::string& message) {
-  std::fprintf(stderr, "dbs-bench-folds: %s\nusage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--smooth-turned 0|1] [--coarse-pass 0|1|2] [--solver linear|ceres] [--density F] [--noise F] [--save DIR]\nshapes:", message.c_str());
+  std::fprintf(stderr, "dbs-bench-folds: %s\nusage: dbs-bench-folds [--shape NAME[,NAME...]] [--threads N] [--max-level N] [--repair 0|1] [--smooth-turned 0|1] [--coarse-pass 0|1|2] [--fit-to-target 0|1] [--solver linear|ceres] [--density F] [--noise F] [--save DIR]\nshapes:", message.c_str());
   for (const std::string& name : dbs_folds::fold_shape_names()) std::fprintf(stderr, " %s", name.c_str());
   std::fprintf(stderr, "\n");
   std::exit(2);
@@ -58,6 +58,7 @@ struct Settings {
   int repair = -1;     // -1: the library's default (DBS_OPT_REPAIR)
   int smooth_turned = -1;  // -1: the library's default (DBS_OPT_SMOOTH_TURNED)
   int coarse_pass = -1;    // -1: the library's default (DBS_OPT_COARSE_PASS)
+  int fit_to_target = -1;  // -1: the library's default (DBS_OPT_FIT_TO_TARGET)
   int solver = -1;     // -1: the library's default (DBS_OPT_SOLVER)
   std::string save_dir;  // non-empty: each shape's cloud and boundary are written there
   double density = 1.0;  // points as a multiple of each shape's usual 4,000 or so
@@ -93,6 +94,8 @@ Settings parse_arguments(int argc, char** argv) {
       settings.smooth_turned = parse_int(arg, value);
     } else if (arg == "--coarse-pass") {
       settings.coarse_pass = parse_int(arg, value);
+    } else if (arg == "--fit-to-target") {
+      settings.fit_to_target = parse_int(arg, value);
     } else if (arg == "--density") {
       settings.density = bench::parse_number(arg, value, [](double x) { return x > 0.0 && x <= 1000.0; }, "a number in (0, 1000]", usage_error);
     } else if (arg == "--noise") {
@@ -290,12 +293,20 @@ int main(int argc, char** argv) {
 #else
   if (settings.coarse_pass > 0) usage_error("--coarse-pass: this libdbs has no DBS_OPT_COARSE_PASS");
 #endif
+#ifdef DBS_OPT_FIT_TO_TARGET
+  if (settings.fit_to_target >= 0 && dbs_options_set_int(options, DBS_OPT_FIT_TO_TARGET, settings.fit_to_target) != DBS_OK) usage_error(std::string("--fit-to-target: ") + dbs_last_error_message());
+#else
+  if (settings.fit_to_target > 0) usage_error("--fit-to-target: this libdbs has no DBS_OPT_FIT_TO_TARGET");
+#endif
   if (settings.solver >= 0 && dbs_options_set_int(options, DBS_OPT_SOLVER, settings.solver) != DBS_OK) usage_error(std::string("--solver: ") + dbs_last_error_message());
   int32_t max_level = 0, threads = 0, repair = 0, solver = 0;
   dbs_options_get_int(options, DBS_OPT_SOLVER, &solver);
   double relative_accuracy = 0.0;
   dbs_options_get_int(options, DBS_OPT_REPAIR, &repair);
-  int32_t smooth_turned = 0, coarse_pass = 0;
+  int32_t smooth_turned = 0, coarse_pass = 0, fit_to_target = 0;
+#ifdef DBS_OPT_FIT_TO_TARGET
+  dbs_options_get_int(options, DBS_OPT_FIT_TO_TARGET, &fit_to_target);
+#endif
 #ifdef DBS_OPT_SMOOTH_TURNED
   dbs_options_get_int(options, DBS_OPT_SMOOTH_TURNED, &smooth_turned);
 #endif
@@ -306,8 +317,8 @@ int main(int argc, char** argv) {
   dbs_options_get_int(options, DBS_OPT_THREADS, &threads);
   dbs_options_get_double(options, DBS_OPT_RELATIVE_ACCURACY, &relative_accuracy);
 
-  std::printf("libdbs %s, max level %d, relative accuracy %g, threads %s, repair %s, smoothing of turned sheets %s, coarse pass %s, solver %s, noise %g of the diagonal\n", dbs_version_string(), max_level, relative_accuracy,
-              threads == 0 ? "all" : std::to_string(threads).c_str(), repair ? "on" : "off", smooth_turned ? "on" : "off", coarse_pass == 0 ? "off" : coarse_pass == 2 ? "on, fit first" : "on, folds first", solver == DBS_SOLVER_CERES ? "ceres" : "linear", settings.noise);
+  std::printf("libdbs %s, max level %d, relative accuracy %g, threads %s, repair %s, smoothing of turned sheets %s, coarse pass %s, fit to the target %s, solver %s, noise %g of the diagonal\n", dbs_version_string(), max_level, relative_accuracy,
+              threads == 0 ? "all" : std::to_string(threads).c_str(), repair ? "on" : "off", smooth_turned ? "on" : "off", coarse_pass == 0 ? "off" : coarse_pass == 2 ? "on, fit first" : "on, folds first", fit_to_target ? "on" : "off", solver == DBS_SOLVER_CERES ? "ceres" : "linear", settings.noise);
   std::printf("folds: reference triangles whose signed (u,v) area is negative or below 1e-3 of the median, as inverted+collapsed;\n"
               "to truth: mean distance of the result surface at each point's (u,v) to the noise-free surface;\n"
               "turned: points on the result surface where its normal Su x Sv points against the noise-free surface's; ref.-free turned: the library's count;\n"

@@ -53,7 +53,7 @@ static const char *const usage_text =
     "  --coarse-pass 0|1|2        where the surfaces pleated, a second pass from a coarse root;\n"
     "                             the better result is kept, 1 folds first, 2 fit first [1]\n"
     "  --fit-to-target 0|1        a patch whose largest grid misses the target is fitted to its\n"
-    "                             points and kept a leaf where that meets it [1]\n"
+    "                             error sample and kept a leaf where that meets it [1]\n"
     "  --auto-boundary            no BOUNDARY: the cloud's outline cut at its four corners\n"
     "                             (dbs_boundary_detect)\n"
     "  --outline-neighbours N     neighbourhood of the outline with --auto-boundary [24]\n"

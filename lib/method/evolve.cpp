@@ -187,6 +187,9 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
   double mean = 0.0, max = 0.0, loss_mean = 0.0;
   RefinementCounts counts;
   double error = 0.0;
+  // Whether the last measurement covered the whole sample on the last surface (its largest
+  // grid's, measured without a bound): only then are all of `feet` on that surface.
+  bool measured_whole = false;
   // Each sample point's foot on the last surface it was measured on: the surface moves
   // little from one grid to the next, so the descent starts there (NaN: not measured yet).
   std::vector<Vec2> feet;
@@ -225,6 +228,7 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
     measure_distances(surface_projector, points, patch.subcloud, stride, settings.threads, mean, max, settings.error_loss, settings.error_loss_scale, robust ? &loss_mean : nullptr,
                       settings.meter, &feet, 1, grid < settings.max_grid ? settings.accuracy : std::numeric_limits<double>::infinity(), nullptr, &measured_error);
     error = robust ? loss_mean : mean;
+    measured_whole = grid >= settings.max_grid;
     if (tick) tick(grid);
     if (error <= settings.accuracy || grid >= settings.max_grid) break;
     if (settings.far_above > 0.0 && measured_error > settings.far_above * settings.accuracy) {
@@ -238,7 +242,9 @@ void evolve_patch(Patch& patch, const std::vector<Vec3>& points, const DirectedP
       }
     }
   }
-  if (settings.fit_to_target) fit_to_target(patch, points, stride, feet, settings, mean, max, error);
+  // A patch stopped far above the target (stop_when_far) has only part of its feet on its
+  // surface and is not fitted.
+  if (settings.fit_to_target && measured_whole) fit_to_target(patch, points, stride, feet, settings, mean, max, error);
   // The sample's figures; a patch that stays a leaf is measured on all its points by the
   // projection of its subcloud (A2), which computes those distances anyway.
   patch.mean_distance = mean;
