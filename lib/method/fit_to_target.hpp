@@ -39,9 +39,10 @@ constexpr double kFitReach = 4.0;          ///< a fit is tried from at most this
 
 /// Fits `patch` (evolved, its error `error` above settings.accuracy, measured on the whole
 /// sample) to the sample points patch.subcloud[k * stride] at their feet feet[k] on its
-/// surface (local parameters; NaN: not measured, left out), as described above. When the fit is kept, patch's surface and grid are the
-/// fitted ones and mean, max and error those of the sample on it; otherwise nothing changes.
-/// True when kept. Deterministic for any thread count.
+/// surface (local parameters; NaN: not measured, left out), as described above. When the
+/// fit is kept, patch's surface and grid are the fitted ones and mean, max and error those
+/// of the sample on it; otherwise nothing changes. True when kept. Deterministic for any
+/// thread count.
 bool fit_to_target(Patch& patch, const std::vector<Vec3>& points, std::size_t stride, const std::vector<Vec2>& feet, const EvolveSettings& settings, double& mean, double& max,
                    double& error);
 
