@@ -54,7 +54,8 @@ struct EvolveSettings {
   double far_above = 0.0;
   bool stop_when_far = false;
   /// A patch whose grid stops growing above the target (but within kFitReach times it) is
-  /// fitted to its sample at their feet, kept where that meets the target (fit_to_target.hpp).
+  /// fitted to its sample at their feet, kept where that comes clearly below the target
+  /// (kFitMargin of it, fit_to_target.hpp).
   bool fit_to_target = true;
 };
 

@@ -6,7 +6,12 @@
 // sample's feet lies within 0.56 times it. Such a patch need not be subdivided: fewer
 // patches and levels, fewer seams for points to fold across, and less time (the caps from
 // 89-209 patches to one; rippled 1M of dbs-bench from 21 patches to 5). The fit is kept only
-// where it meets the target, and only where it turns the surface under no sample point
+// where it comes clearly below the target (kFitMargin of it: the caps' fits reach 0.56-0.61,
+// rippled 1M's 0.79, while the fits that only just met it were plate leaves of the noisy
+// fingers at 6 times dbs-bench-folds' points, 0.88-1.00 of their target, which the noise
+// floor had raised: the fit shaved their noise and spared them the deeper leaves that follow
+// the fingers' walls, 826 -> 1,562 folded reference triangles), and only where it turns the
+// surface under no sample point
 // (Su x Sv at its foot against the projected surface's at the point's foot there: an
 // unguarded fit pleats where the sample is thin, as on the mushroom and the tall dome,
 // where it was tried on every patch above the target and folded 3,805 instead of 437
@@ -15,12 +20,7 @@
 // points of a deep leaf passed through them and collapsed others between them on the cone).
 // Also on noisy clouds (whose target the noise floor raised): without the fit the noisy
 // rippled field of dbs-bench-folds chased its noise down to 5 levels at 4,096 points and
-// missed the target; with it, 2 levels like the clean field. Noisy clouds of 1-3 times
-// dbs-bench-folds' points (sigma 0.35% and 0.5% of the diagonal) fold less with it (96 runs:
-// 3,902 -> 3,679 folded reference triangles, the cone most, the open box more), 4-6 times
-// more (40 runs: 15,642 -> 16,851, the fingers at 6 times and 0.5% 826 -> 1,562): there the
-// raised target lets a fitted patch stay a leaf where the deeper leaves followed the steep
-// walls better.
+// missed the target; with it, 2 levels like the clean field (its fits reach 0.71-0.76).
 // The fit is judged on the points it was fitted to: with at least 4 of them a node (the
 // sample holds up to 8,192 points, the largest default grid 81 moved nodes) the optimism is
 // small, and a leaf is judged again on all its points by the projection of A2. The fit is
@@ -35,7 +35,8 @@
 namespace dbs {
 
 constexpr double kFitPointsPerNode = 4.0;  ///< sample points a moved grid node, at least
-constexpr double kFitReach = 4.0;          ///< a fit is tried from at most this x the target
+constexpr double kFitReach = 4.0;          ///< a fit is tried from at most this x the target ...
+constexpr double kFitMargin = 0.85;        ///< ... and kept when it reaches this x the target
 
 /// Fits `patch` (evolved, its error `error` above settings.accuracy, measured on the whole
 /// sample) to the sample points patch.subcloud[k * stride] at their feet feet[k] on its

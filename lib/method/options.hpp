@@ -47,7 +47,8 @@ struct Options {
   /// kept (coarse_pass.hpp): 1 folds first, 2 fit first; 0: the plain pass only.
   int coarse_pass = 1;
   /// 1: a patch whose largest grid misses the target is fitted to its sample at their feet
-  /// and stays a leaf where that meets it (fit_to_target.hpp); 0: eq. (5)'s projections alone.
+  /// and stays a leaf where that comes within 0.85 times it (fit_to_target.hpp); 0: eq. (5)'s
+  /// projections alone.
   int fit_to_target = 1;
   /// The Ceres refinement (curve_refinement.hpp), used with Solver::Ceres only: the robust
   /// loss, its scale in cloud units (0 = derived from the cloud: 3 sigma of its estimated

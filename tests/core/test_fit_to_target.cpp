@@ -1,10 +1,12 @@
 // The fit to the target (DBS_OPT_FIT_TO_TARGET, fit_to_target.hpp): a patch whose largest grid
 // misses the target is fitted by least squares to its sample at their feet, and stays a leaf
-// where that fit meets the target without turning the surface under a sample point.
+// where that fit comes within kFitMargin of the target without turning the surface under a
+// sample point.
 // - On a flat leaf 0.12 (on average) below a bump's points: the fit is kept and meets the
 //   target; refused (the patch untouched) with fewer than kFitPointsPerNode sample points a
-//   moved node, from more than kFitReach times the target, where it would not meet the
-//   target, and where the feet are mirrored (a fit through them turns the surface over);
+//   moved node, from more than kFitReach times the target, where it would not come within
+//   kFitMargin of the target, and where the feet are mirrored (a fit through them turns the
+//   surface over);
 // - the 270- and 300-degree sphere caps of dbs-bench-folds (4,096 points): one patch instead
 //   of a quadtree of 89 and 97, no more folded reference triangles, a lower mean distance;
 // - the mushroom, whose root ends far above the target: its root is the same bit for bit;
@@ -123,6 +125,22 @@ void fits_are_refused_where_they_cannot_be_trusted(void**) {
   assert_true(error <= dbs::kFitReach * 0.035);
   assert_false(fit(rough, noisy, 0.035, error));
   assert_true(same_grid(before, rough.grid));
+  // A fit that meets the target but not kFitMargin of it is refused too: measured at a
+  // generous target, the same fit's error e is then given a target of e / 0.95.
+  dbs::Patch probe = flat_leaf();
+  const Sample again = sample(probe, 2000, 0.1);
+  double fitted_error = error_at_feet(probe, again);
+  assert_true(fit(probe, again, 0.1, fitted_error));
+  std::printf("rough bump fitted: error %.4g\n", fitted_error);
+  dbs::Patch marginal = flat_leaf();
+  sample(marginal, 2000, 0.1);
+  error = error_at_feet(marginal, again);
+  assert_false(fit(marginal, again, fitted_error / 0.95, error));
+  assert_true(same_grid(before, marginal.grid));
+  dbs::Patch clear = flat_leaf();
+  sample(clear, 2000, 0.1);
+  error = error_at_feet(clear, again);
+  assert_true(fit(clear, again, fitted_error / 0.8, error));
   // Mirrored feet: a fit through them turns the surface over (the plane z = 0.1 above the
   // leaf, 0.1 from it, each point's foot mirrored in x), so it is refused; the same points at
   // their own feet are fitted.
